@@ -1,0 +1,18 @@
+//--------------------------------------------------------------------------
+// MPMbasis — two-dimensional basis functions and gradients of one point
+//--------------------------------------------------------------------------
+// Seed 002 eq 22 and footnote 3: S(X,Y) = S(X) S(Y),
+// dS/dX = dS(X) S(Y), dS/dY = S(X) dS(Y), from SvpMPM (mpType 1, eqs 23-24)
+// or SvpGIMP (mpType 2, eqs 25-26) in each direction.
+// Inputs:  coord (nodes x 2) · mp.nIN, mp.nn, mp.mpC, mp.lp, mp.mpType · h (2)
+// Outputs: mp.Svp (nn) · mp.dSvp (2 x nn), gradients with respect to X~ (start of step)
+// Tests:   tests/test_basis.cpp
+//--------------------------------------------------------------------------
+#pragma once
+#include "mpData.h"
+
+namespace ample {
+
+void MPMbasis(const Mesh& mesh, MaterialPoint& mp);
+
+}  // namespace ample

@@ -1,0 +1,102 @@
+//--------------------------------------------------------------------------
+// ample — the analysis: load steps, Newton-Raphson iterations, material points
+//--------------------------------------------------------------------------
+// Seed 002 figs 4-5 and sec 3.5. For each load step lstp = 1..lstps:
+//   elemMPinfo (basis at the start of the step) -> detExtForce (scaled by
+//   lstp/lstps) -> detFDoFs -> Newton-Raphson loop { linSolve -> detMPs ->
+//   oobf = fext - fint + frct, fErr = |oobf| / |fext + frct| (eq 35) } while
+//   (fErr > tol and NRit < NRitMax) or NRit < 2 -> updateMPs -> postPro.
+// A step that ends with fErr > tol stops the run (exit 1): the state of the
+// last converged step is kept and written, the failure is named on stderr.
+// See ample.h for inputs and outputs.
+//--------------------------------------------------------------------------
+#include "ample.h"
+#include "constitutive/Hooke3d.h"
+#include "detExtForce.h"
+#include "detFDoFs.h"
+#include "detMPs.h"
+#include "elemMPinfo.h"
+#include "errors.h"
+#include "linSolve.h"
+#include "plotting/postPro.h"
+#include "plotting/writeOutput.h"
+#include "updateMPs.h"
+#include <cstdio>
+#include <iostream>
+
+namespace ample {
+
+Eigen::VectorXd solveLoadStep(Analysis& an, int lstp, RunLog& log, bool quiet) {
+  Mesh& mesh = an.mesh;
+  const int nDoF = mesh.nDoF();
+  Stopwatch sw;
+  elemMPinfo(mesh, an.mpData);                                   log.t.elemMPinfo += sw.lap();
+  const Eigen::VectorXd fext =
+      detExtForce(nDoF, an.g, an.mpData) * (double(lstp) / an.lstps); log.t.detExtForce += sw.lap();
+  Eigen::VectorXd oobf = fext, frct = Eigen::VectorXd::Zero(nDoF), uvw = frct;
+  const std::vector<int> fd = detFDoFs(mesh);                    log.t.detFDoFs += sw.lap();
+  double fErr = 1.0;
+  int NRit = 0;
+  SpMat Kt(nDoF, nDoF);
+  while ((fErr > an.tol && NRit < an.NRitMax) || NRit < 2) {
+    const LinSolveOut ls = linSolve(mesh.bc, Kt, oobf, NRit, fd); log.t.linSolve += sw.lap();
+    uvw += ls.duvw;
+    frct += ls.drct;
+    DetMPsOut mps = detMPs(uvw, an.mpData);                      log.t.detMPs += sw.lap();
+    Kt = std::move(mps.Kt);
+    oobf = fext - mps.fint + frct;                               // eq 31 with reactions
+    fErr = oobf.norm() / std::max((fext + frct).norm(), 1e-300); // eq 35
+    log.residuals.push_back({lstp, NRit, fErr});
+    if (!quiet) std::printf("  iteration %2d  NR error %10.3e\n", NRit + 1, fErr);
+    NRit++;
+    if (!std::isfinite(fErr)) break;
+  }
+  log.totalNRit += NRit;
+  log.steps.push_back({lstp, double(lstp) / an.lstps, NRit, fErr, fErr <= an.tol, 0.0});
+  if (!(fErr <= an.tol))
+    throw RunError("load step " + std::to_string(lstp) + " did not converge: fErr = " +
+                   std::to_string(fErr) + " > tol = " + std::to_string(an.tol) + " after " +
+                   std::to_string(NRit) + " Newton-Raphson passes (NRitMax = " +
+                   std::to_string(an.NRitMax) + ")");
+  return uvw;
+}
+
+void restoreConverged(std::vector<MaterialPoint>& mpData) {
+  for (MaterialPoint& mp : mpData) {
+    mp.F = mp.Fn;
+    mp.epsE = mp.epsEn;
+    mp.sig = Hooke3d(mp.epsEn, mp.mCst).Ksig / mp.Fn.determinant();  // stored state is elastic
+  }
+}
+
+int ample(const Setup& setup, const Params& P, const RunOptions& opt) {
+  Stopwatch total, sw;
+  Analysis an = setup.setupGrid(P);                              // setupGrid
+  RunLog log;
+  prepareOutput(opt.outDir);
+  try {
+    for (int lstp = 1; lstp <= an.lstps; ++lstp) {               // load steps
+      if (!opt.quiet) std::printf("%s: load step %d of %d\n", setup.name, lstp, an.lstps);
+      sw.lap();
+      const Eigen::VectorXd uvw = solveLoadStep(an, lstp, log, opt.quiet);
+      Stopwatch swU;
+      updateMPs(uvw, an.mpData);                                 log.t.updateMPs += swU.lap();
+      postPro(an.mesh, an.mpData, lstp, opt.vtkEvery, opt.outDir); log.t.postPro += swU.lap();
+      log.steps.back().seconds = sw.lap();
+      log.lastConverged = lstp;
+    }
+  } catch (const RunError& e) {
+    if (!log.steps.empty() && !log.steps.back().converged) log.steps.back().seconds = sw.lap();
+    restoreConverged(an.mpData);
+    log.converged = false;
+    log.message = e.what();
+    std::cerr << "ample: " << setup.name << ": " << e.what() << "\n"
+              << "ample: output kept up to the last converged load step ("
+              << log.lastConverged << ") in " << opt.outDir << "\n";
+  }
+  log.t.total = total.lap();
+  writeOutput(setup, P, an, log, opt.outDir, opt.quiet);
+  return log.converged ? 0 : 1;
+}
+
+}  // namespace ample

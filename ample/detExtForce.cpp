@@ -1,0 +1,20 @@
+//--------------------------------------------------------------------------
+// detExtForce — nodal external forces from body forces and point forces
+//--------------------------------------------------------------------------
+// Seed 002 eqs 27-28. See detExtForce.h for inputs and outputs.
+//--------------------------------------------------------------------------
+#include "detExtForce.h"
+
+namespace ample {
+
+Eigen::VectorXd detExtForce(int nDoF, double g, const std::vector<MaterialPoint>& mpData) {
+  Eigen::VectorXd fext = Eigen::VectorXd::Zero(nDoF);
+  for (const MaterialPoint& mp : mpData) {
+    const Vector2d fp = mp.mpM * Vector2d(0.0, -g) + mp.fp;  // body (eq 27) + point (eq 28)
+    for (int v = 0; v < mp.nn; ++v)
+      for (int i = 0; i < nD; ++i) fext(dof(mp.nIN[v], i)) += mp.Svp[v] * fp(i);
+  }
+  return fext;
+}
+
+}  // namespace ample

@@ -1,0 +1,32 @@
+//--------------------------------------------------------------------------
+// detMPs — internal force and stiffness of all material points (the point loop)
+//--------------------------------------------------------------------------
+// Seed 002 sec 2 (updated Lagrangian): for each point
+//   dF = I + sum_v du_v (x) dS_v/dX~            (eq 17)
+//   F = dF Fn;  b_e,tr = dF exp(2 eps_e,n) dF'  (eqs 7-9)
+//   eps_e,tr = ln(b_e,tr)/2                      (eq 10)
+//   tau, D, eps_e from Hooke3d / VMconst         (eqs 5, 11)
+//   sigma = tau / det(F)                         (eq 6)
+//   dS/dx = dS/dX~ dF^-1                         (eq 18)
+//   k_p = [dS/dx]' a [dS/dx] V_p, f_p = [dS/dx]' sigma V_p, V_p = det(dF) V_p,n
+//                                                (eqs 14-16, a from formULstiff)
+// and assembles Kt = A k_p, fint = A f_p (eqs 30-31). Plane strain: only the
+// in-plane displacement gradient enters; F, b_e and stress are 3D.
+// Inputs:  uvw (nDoF) displacement increment of the step · mpData
+// Outputs: fint (nDoF) · Kt (nDoF x nDoF) · mpData (F, sig, epsE) updated
+// Tests:   tests/test_detMPs.cpp
+//--------------------------------------------------------------------------
+#pragma once
+#include "linSolve.h"
+#include "mpData.h"
+
+namespace ample {
+
+struct DetMPsOut {
+  Eigen::VectorXd fint;  // nodal internal forces
+  SpMat Kt;              // global tangent stiffness
+};
+
+DetMPsOut detMPs(const Eigen::VectorXd& uvw, std::vector<MaterialPoint>& mpData);
+
+}  // namespace ample

@@ -1,0 +1,41 @@
+//--------------------------------------------------------------------------
+// elemForMP — background grid cells overlapped by a material point's domain
+//--------------------------------------------------------------------------
+// See elemForMP.h for the rule, inputs and outputs.
+//--------------------------------------------------------------------------
+#include "elemForMP.h"
+#include "errors.h"
+#include <cmath>
+#include <sstream>
+
+namespace ample {
+
+int elemForMP(const Mesh& mesh, const Vector2d& mpC, const Vector2d& lp,
+              std::array<int, MAXE>& eIN) {
+  const int nels[nD] = {mesh.nelsx, mesh.nelsy};
+  int first[nD], last[nD];
+  for (int i = 0; i < nD; ++i) {
+    const double tol = 1e-9;  // in cell widths
+    const double lo = (mpC(i) - lp(i) - mesh.origin(i)) / mesh.h(i);
+    const double hi = (mpC(i) + lp(i) - mesh.origin(i)) / mesh.h(i);
+    first[i] = int(std::floor(lo + tol));
+    last[i] = std::max(first[i], int(std::ceil(hi - tol)) - 1);
+    if (!(lo > -tol && hi < nels[i] + tol) || first[i] < 0 || last[i] >= nels[i]) {
+      std::ostringstream msg;
+      msg << "material point at (" << mpC(0) << ", " << mpC(1) << ") with domain half lengths ("
+          << lp(0) << ", " << lp(1) << ") reaches outside the background grid [" << mesh.origin(0)
+          << ", " << mesh.origin(0) + mesh.nelsx * mesh.h(0) << "] x [" << mesh.origin(1) << ", "
+          << mesh.origin(1) + mesh.nelsy * mesh.h(1) << "]";
+      throw RunError(msg.str());
+    }
+  }
+  if ((last[0] - first[0] + 1) * (last[1] - first[1] + 1) > MAXE)
+    throw RunError("material point domain overlaps more than 3 x 3 cells (lp > h): refine "
+                   "the points or enlarge the grid spacing");
+  int ne = 0;
+  for (int j = first[1]; j <= last[1]; ++j)
+    for (int i = first[0]; i <= last[0]; ++i) eIN[ne++] = j * mesh.nelsx + i;
+  return ne;
+}
+
+}  // namespace ample

@@ -1,0 +1,23 @@
+//--------------------------------------------------------------------------
+// elemForMP — background grid cells overlapped by a material point's domain
+//--------------------------------------------------------------------------
+// Seed 002 table 1. A cell belongs to the point when it overlaps the domain
+// [x_p - l_p, x_p + l_p] in every direction with positive length (a cell that
+// only touches the domain edge carries zero basis functions and is left out;
+// "touching" allows a round-off of 1e-9 h). A standard MPM point (l_p = 0)
+// belongs to the cell containing it; on a cell edge, to the cell above/right.
+// The grid is regular, so the cells follow from the spacing without a search.
+// Inputs:  mesh (nelsx, nelsy, h, origin) · mpC (2) · lp (2)
+// Outputs: eIN (cells, ascending) · ne (their number); throws RunError if the
+//          domain reaches outside the grid or overlaps more than 3 x 3 cells
+// Tests:   tests/test_grid.cpp
+//--------------------------------------------------------------------------
+#pragma once
+#include "mpData.h"
+
+namespace ample {
+
+int elemForMP(const Mesh& mesh, const Vector2d& mpC, const Vector2d& lp,
+              std::array<int, MAXE>& eIN);
+
+}  // namespace ample

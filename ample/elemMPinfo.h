@@ -1,0 +1,18 @@
+//--------------------------------------------------------------------------
+// elemMPinfo — cells, nodes, basis functions and gradients of every point
+//--------------------------------------------------------------------------
+// Seed 002 sec 4, table 1: called once at the start of each load step, with
+// the positions and domains at the start of the step (X~); marks the active
+// cells (those linked to any point) for detFDoFs.
+// Inputs:  mesh · mpData (mpC, lp, mpType)
+// Outputs: mpData (eIN, ne, nIN, nn, Svp, dSvp) · mesh.eInA (nels)
+// Tests:   tests/test_basis.cpp
+//--------------------------------------------------------------------------
+#pragma once
+#include "mpData.h"
+
+namespace ample {
+
+void elemMPinfo(Mesh& mesh, std::vector<MaterialPoint>& mpData);
+
+}  // namespace ample

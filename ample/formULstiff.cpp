@@ -1,0 +1,55 @@
+//--------------------------------------------------------------------------
+// formULstiff — spatial consistent tangent a_ijkl of the updated Lagrangian form
+//--------------------------------------------------------------------------
+// Seed 000 eqs A.1-A.2. See formULstiff.h for inputs and outputs.
+//--------------------------------------------------------------------------
+#include "formULstiff.h"
+#include <Eigen/Eigenvalues>
+#include <cmath>
+
+namespace ample {
+
+namespace {
+constexpr int voigt[3][3] = {{0, 3, 5}, {3, 1, 4}, {5, 4, 2}};  // (i,j) -> Voigt row
+
+// (ln a - ln b)/(a - b), written to stay accurate as a -> b (limit 1/b)
+double logDividedDifference(double a, double b) {
+  const double x = (a - b) / b;
+  if (std::abs(x) < 1e-12) return (1.0 - 0.5 * x) / b;
+  return std::log1p(x) / (a - b);
+}
+}  // namespace
+
+Matrix9d dLogdB(const Matrix3d& b) {
+  Eigen::SelfAdjointEigenSolver<Matrix3d> es(b);
+  const Vector3d lam = es.eigenvalues();
+  const Matrix3d& n = es.eigenvectors();  // column a is eigenvector n_a
+  Matrix9d L = Matrix9d::Zero();
+  for (int a = 0; a < 3; ++a)
+    for (int c = 0; c < 3; ++c) {
+      const double th = logDividedDifference(lam(a), lam(c));
+      for (int i = 0; i < 3; ++i)
+        for (int j = 0; j < 3; ++j)
+          for (int k = 0; k < 3; ++k)
+            for (int l = 0; l < 3; ++l)
+              L(3 * i + j, 3 * k + l) += th * n(i, a) * n(k, a) * n(l, c) * n(j, c);
+    }
+  return L;
+}
+
+Matrix9d formULstiff(const Matrix3d& F, const Matrix6d& D, const Vector6d& sig,
+                     const Matrix3d& BeT) {
+  Matrix9d D9, B9, S9 = Matrix9d::Zero();
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j)
+      for (int k = 0; k < 3; ++k)
+        for (int l = 0; l < 3; ++l) {
+          D9(3 * i + j, 3 * k + l) = D(voigt[i][j], voigt[k][l]);
+          B9(3 * i + j, 3 * k + l) = (i == k ? BeT(j, l) : 0.0) + (j == k ? BeT(i, l) : 0.0);
+          if (j == k) S9(3 * i + j, 3 * k + l) = sig(voigt[i][l]);  // sigma_il delta_jk
+        }
+  const double J = F.determinant();
+  return (0.5 / J) * D9 * dLogdB(BeT) * B9 - S9;
+}
+
+}  // namespace ample

@@ -1,0 +1,36 @@
+//--------------------------------------------------------------------------
+// main — entry point of the `ample` program
+//--------------------------------------------------------------------------
+// Reads the command line (cli.h), then runs the setup (ample.h).
+//   ample --list
+//   ample compaction nelsy=128 mpType=1 --vtk 0
+//   ample collapse a=2 mp=3 --out results/collapse_h1
+// Exit status: 0 converged, 1 a load step did not converge or the run could
+// not go on, 2 bad input.
+//--------------------------------------------------------------------------
+#include "cli.h"
+#include "errors.h"
+#include <iostream>
+
+int main(int argc, char** argv) {
+  using namespace ample;
+  CliRequest req;
+  try {
+    req = parseArgs(std::vector<std::string>(argv + 1, argv + argc));
+  } catch (const InputError& e) {
+    std::cerr << "ample: " << e.what() << "\n";
+    return 2;
+  }
+  switch (req.mode) {
+    case CliMode::List: std::cout << listText(); return 0;
+    case CliMode::Help: std::cout << usageText() << "setups:\n" << listText(); return 0;
+    case CliMode::SetupHelp: std::cout << setupHelpText(*req.setup); return 0;
+    case CliMode::Run: break;
+  }
+  try {
+    return ample::ample(*req.setup, req.params, req.options);
+  } catch (const std::exception& e) {  // e.g. the output folder cannot be written
+    std::cerr << "ample: " << e.what() << "\n";
+    return 1;
+  }
+}

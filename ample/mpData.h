@@ -1,0 +1,78 @@
+//--------------------------------------------------------------------------
+// mpData.h — the two data structures of the analysis: material points and mesh
+//--------------------------------------------------------------------------
+// Seed 002 tables 3 (mpData) and 4 (mesh). One MaterialPoint holds the whole
+// state of one point, so a debugger shows it at once (`p mpData[17]`).
+// Indices are 0-based: node n owns the degrees of freedom 2n (x) and 2n+1 (y).
+// Stress and strain are 6-vectors in the order [xx yy zz xy yz zx]; strains
+// store engineering shear components (2 eps_xy, ...).
+//--------------------------------------------------------------------------
+#pragma once
+#include <Eigen/Dense>
+#include <array>
+#include <vector>
+
+namespace ample {
+
+using Vector6d = Eigen::Matrix<double, 6, 1>;
+using Matrix6d = Eigen::Matrix<double, 6, 6>;
+using Eigen::Matrix3d;
+using Eigen::Vector2d;
+using Eigen::Vector3d;
+
+constexpr int nD = 2;        // spatial dimensions of the background grid
+constexpr int nen = 4;       // nodes per grid cell (bi-linear quadrilateral)
+constexpr int MAXN = 16;     // most nodes one point may influence (4 x 4)
+constexpr int MAXE = 9;      // most cells one point domain may overlap (3 x 3)
+
+enum class MpType { MPM = 1, GIMP = 2 };          // seed 002: mpType
+enum class CmType { Elastic = 1, VonMises = 2 };  // seed 002: cmType
+
+struct MaterialPoint {
+  MpType mpType = MpType::GIMP;            // material point type
+  CmType cmType = CmType::Elastic;         // constitutive model type
+  Vector2d mpC = Vector2d::Zero();         // current coordinates x_p
+  Vector2d X0 = Vector2d::Zero();          // original coordinates X_p
+  double vp = 0, vp0 = 0;                  // current and original volume (eq 15)
+  double mpM = 0;                          // mass
+  int nn = 0;                              // number of nodes linked to the point
+  std::array<int, MAXN> nIN{};             // nodes linked to the point
+  int ne = 0;                              // number of cells linked to the point
+  std::array<int, MAXE> eIN{};             // cells linked to the point
+  std::array<double, MAXN> Svp{};          // basis functions S_vp
+  Eigen::Matrix<double, nD, MAXN> dSvp = Eigen::Matrix<double, nD, MAXN>::Zero();  // dS_vp/dX~
+  Matrix3d Fn = Matrix3d::Identity();      // deformation gradient at start of load step
+  Matrix3d F = Matrix3d::Identity();       // current deformation gradient
+  Vector6d sig = Vector6d::Zero();         // Cauchy stress
+  Vector6d epsEn = Vector6d::Zero();       // elastic log strain at start of load step
+  Vector6d epsE = Vector6d::Zero();        // current elastic log strain
+  Vector3d mCst = Vector3d::Zero();        // material constants [E, nu, rho_y]
+  Vector2d fp = Vector2d::Zero();          // point force carried by the point (total)
+  Vector2d u = Vector2d::Zero();           // total displacement
+  Vector2d lp = Vector2d::Zero();          // domain half lengths (0 for MPM)
+  Vector2d lp0 = Vector2d::Zero();         // original domain half lengths
+};
+
+// degree of freedom i (0 = x, 1 = y) of node `node` (0-based); written once here
+inline int dof(int node, int i) { return nD * node + i; }
+
+struct BC {
+  int dof;       // constrained degree of freedom
+  double value;  // prescribed displacement increment per load step
+};
+
+struct Mesh {
+  int nelsx = 0, nelsy = 0;                            // cells in x and y
+  Vector2d origin = Vector2d::Zero();                  // lower-left corner of the grid
+  Eigen::Matrix<int, Eigen::Dynamic, nen, Eigen::RowMajor> etpl;     // cell topology
+  Eigen::Matrix<double, Eigen::Dynamic, nD, Eigen::RowMajor> coord;  // nodal coordinates
+  Vector2d h = Vector2d::Zero();                       // grid spacing in each direction
+  std::vector<BC> bc;                                  // Dirichlet conditions
+  std::vector<char> eInA;                              // 1 = active cell (holds points)
+
+  int nodes() const { return int(coord.rows()); }
+  int nels() const { return int(etpl.rows()); }
+  int nDoF() const { return nD * nodes(); }
+};
+
+}  // namespace ample

@@ -1,0 +1,22 @@
+//--------------------------------------------------------------------------
+// makeVtk — legacy VTK file of the background grid
+//--------------------------------------------------------------------------
+// Seed 002 sec 5.2 (fig 13): mesh.vtk, an unstructured grid of quads (z = 0),
+// readable by ParaView and VisIt. Written to a temporary name, then renamed.
+// Inputs:  mesh (coord, etpl) · path
+// Outputs: the file at path
+// Tests:   tests/test_output.cpp
+//--------------------------------------------------------------------------
+#pragma once
+#include "ample/mpData.h"
+#include <string>
+
+namespace ample {
+
+void makeVtk(const Mesh& mesh, const std::string& path);
+
+// write `text` to path.tmp and rename it to path, so that a file that exists
+// is complete; throws RunError when the file cannot be written
+void atomicWrite(const std::string& path, const std::string& text);
+
+}  // namespace ample

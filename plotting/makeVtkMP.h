@@ -1,0 +1,20 @@
+//--------------------------------------------------------------------------
+// makeVtkMP — legacy VTK file of the material points of one load step
+//--------------------------------------------------------------------------
+// Seed 002 sec 5.2 (fig 13): mpData_<lstp>.vtk, one vertex per point at its
+// current position with point data: displacement (vector), Cauchy stress
+// sig_xx sig_yy sig_zz sig_xy, von Mises rho = sqrt(2 J2), volume, domain half
+// lengths lp. Written to a temporary name, then renamed.
+// Inputs:  mpData · path
+// Outputs: the file at path
+// Tests:   tests/test_output.cpp
+//--------------------------------------------------------------------------
+#pragma once
+#include "ample/mpData.h"
+#include <string>
+
+namespace ample {
+
+void makeVtkMP(const std::vector<MaterialPoint>& mpData, const std::string& path);
+
+}  // namespace ample

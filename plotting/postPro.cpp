@@ -1,0 +1,19 @@
+//--------------------------------------------------------------------------
+// postPro — VTK output of a converged load step
+//--------------------------------------------------------------------------
+// See postPro.h for inputs and outputs.
+//--------------------------------------------------------------------------
+#include "postPro.h"
+#include "makeVtk.h"
+#include "makeVtkMP.h"
+
+namespace ample {
+
+void postPro(const Mesh& mesh, const std::vector<MaterialPoint>& mpData, int lstp, int vtkEvery,
+             const std::string& outDir) {
+  if (vtkEvery <= 0 || lstp % vtkEvery != 0) return;
+  if (lstp == vtkEvery) makeVtk(mesh, outDir + "/mesh.vtk");
+  makeVtkMP(mpData, outDir + "/mpData_" + std::to_string(lstp) + ".vtk");
+}
+
+}  // namespace ample

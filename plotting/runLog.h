@@ -1,0 +1,57 @@
+//--------------------------------------------------------------------------
+// runLog — what a run records: per-step and per-iteration rows, timings
+//--------------------------------------------------------------------------
+// Filled by the main loop (ample/ample.cpp), written by writeOutput as
+// steps.csv, residuals.csv and summary.json. Progress lines on stdout follow
+// the original code: one per load step and one per Newton-Raphson iteration.
+//--------------------------------------------------------------------------
+#pragma once
+#include <chrono>
+#include <string>
+#include <vector>
+
+namespace ample {
+
+struct StepRow {
+  int lstp;
+  double loadFactor;
+  int NRit;          // Newton-Raphson passes taken
+  double fErr;       // final normalised residual (eq 35)
+  bool converged;
+  double seconds;    // wall time of the step
+};
+
+struct ResidualRow {
+  int lstp;
+  int NRit;          // number of linear solves before this residual (0 = first pass)
+  double fErr;
+};
+
+struct Timers {      // wall seconds spent in each function
+  double elemMPinfo = 0, detExtForce = 0, detFDoFs = 0, linSolve = 0, detMPs = 0,
+         updateMPs = 0, postPro = 0, total = 0;
+};
+
+class Stopwatch {    // lap() returns the seconds since the previous lap (or start)
+ public:
+  double lap() {
+    const auto now = std::chrono::steady_clock::now();
+    const double s = std::chrono::duration<double>(now - last_).count();
+    last_ = now;
+    return s;
+  }
+ private:
+  std::chrono::steady_clock::time_point last_ = std::chrono::steady_clock::now();
+};
+
+struct RunLog {
+  std::vector<StepRow> steps;
+  std::vector<ResidualRow> residuals;
+  Timers t;
+  int totalNRit = 0;
+  bool converged = true;
+  int lastConverged = 0;        // last load step that converged
+  std::string message;          // why the run stopped early (empty when complete)
+};
+
+}  // namespace ample

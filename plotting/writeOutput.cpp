@@ -1,0 +1,101 @@
+//--------------------------------------------------------------------------
+// writeOutput — the run's tables and summary
+//--------------------------------------------------------------------------
+// See writeOutput.h for the files and their columns.
+//--------------------------------------------------------------------------
+#include "writeOutput.h"
+#include "ample/errors.h"
+#include "makeVtk.h"
+#include <cstdio>
+#include <filesystem>
+#include <sstream>
+
+namespace ample {
+
+namespace fs = std::filesystem;
+
+void prepareOutput(const std::string& outDir) {
+  std::error_code ec;
+  fs::create_directories(outDir, ec);
+  if (!fs::is_directory(outDir)) throw RunError("cannot create output folder " + outDir);
+  for (const auto& e : fs::directory_iterator(outDir)) {
+    const std::string n = e.path().filename().string();
+    const bool ours = n == "mesh.vtk" || n == "steps.csv" || n == "residuals.csv" ||
+                      n == "mp_final.csv" || n == "summary.json" ||
+                      (n.rfind("mpData_", 0) == 0 && e.path().extension() == ".vtk");
+    if (ours) fs::remove(e.path(), ec);
+  }
+}
+
+static std::string stepsCsv(const RunLog& log) {
+  std::ostringstream s;
+  s.precision(17);
+  s << "lstp,load_factor,NRit,fErr,converged,seconds\n";
+  for (const StepRow& r : log.steps)
+    s << r.lstp << "," << r.loadFactor << "," << r.NRit << "," << r.fErr << ","
+      << (r.converged ? 1 : 0) << "," << r.seconds << "\n";
+  return s.str();
+}
+
+static std::string residualsCsv(const RunLog& log) {
+  std::ostringstream s;
+  s.precision(17);
+  s << "lstp,NRit,fErr\n";
+  for (const ResidualRow& r : log.residuals) s << r.lstp << "," << r.NRit << "," << r.fErr << "\n";
+  return s.str();
+}
+
+static std::string mpFinalCsv(const Analysis& an) {
+  std::ostringstream s;
+  s.precision(17);
+  s << "X0,Y0,x,y,V0,V,sxx,syy,szz,sxy,syz,szx,lpx,lpy\n";
+  for (const MaterialPoint& mp : an.mpData) {
+    s << mp.X0(0) << "," << mp.X0(1) << "," << mp.mpC(0) << "," << mp.mpC(1) << "," << mp.vp0
+      << "," << mp.vp;
+    for (int c = 0; c < 6; ++c) s << "," << mp.sig(c);
+    s << "," << mp.lp(0) << "," << mp.lp(1) << "\n";
+  }
+  return s.str();
+}
+
+static std::string summaryJson(const Setup& setup, const Params& P, const Analysis& an,
+                               const RunLog& log, const Results& res) {
+  std::ostringstream s;
+  s.precision(17);
+  s << "{\n  \"setup\": \"" << setup.name << "\",\n  \"parameters\": {";
+  for (size_t i = 0; i < P.size(); ++i) s << (i ? ", " : "") << "\"" << P[i].name << "\": " << P[i].value;
+  s << "},\n  \"nmp\": " << an.mpData.size() << ",\n  \"nodes\": " << an.mesh.nodes()
+    << ",\n  \"nDoF\": " << an.mesh.nDoF() << ",\n  \"lstps\": " << an.lstps
+    << ",\n  \"total_NR_iterations\": " << log.totalNRit
+    << ",\n  \"converged\": " << (log.converged ? "true" : "false")
+    << ",\n  \"completed\": " << (log.converged ? "true" : "false")
+    << ",\n  \"last_converged_step\": " << log.lastConverged << ",\n  \"message\": \"";
+  for (char c : log.message) s << (c == '"' || c == '\\' ? '\'' : c);
+  const Timers& t = log.t;
+  s << "\",\n  \"wall_seconds\": " << t.total << ",\n  \"seconds\": {\"elemMPinfo\": "
+    << t.elemMPinfo << ", \"detExtForce\": " << t.detExtForce << ", \"detFDoFs\": " << t.detFDoFs
+    << ", \"detMPs\": " << t.detMPs << ", \"linSolve\": " << t.linSolve << ", \"updateMPs\": "
+    << t.updateMPs << ", \"postPro\": " << t.postPro << "},\n  \"results\": {";
+  for (size_t i = 0; i < res.size(); ++i)
+    s << (i ? ", " : "") << "\"" << res[i].first << "\": " << res[i].second;
+  s << "}";
+  for (const auto& r : res)
+    if (r.first == "error") s << ",\n  \"error\": " << r.second;
+  s << "\n}\n";
+  return s.str();
+}
+
+void writeOutput(const Setup& setup, const Params& P, const Analysis& an, const RunLog& log,
+                 const std::string& outDir, bool quiet) {
+  const Results res = setup.results ? setup.results(an, P) : Results{};
+  atomicWrite(outDir + "/steps.csv", stepsCsv(log));
+  atomicWrite(outDir + "/residuals.csv", residualsCsv(log));
+  atomicWrite(outDir + "/mp_final.csv", mpFinalCsv(an));
+  atomicWrite(outDir + "/summary.json", summaryJson(setup, P, an, log, res));
+  if (quiet) return;
+  std::printf("%s: %s after %d load steps, %d Newton-Raphson passes, %.3f s\n", setup.name,
+              log.converged ? "converged" : "STOPPED", log.lastConverged, log.totalNRit, log.t.total);
+  for (const auto& r : res) std::printf("  %-14s %.10g\n", r.first.c_str(), r.second);
+}
+
+}  // namespace ample

@@ -1,0 +1,62 @@
+//--------------------------------------------------------------------------
+// collapse — von Mises block collapsing under self weight (seed 002 sec 5.3)
+//--------------------------------------------------------------------------
+// Half of a 16 m x 8 m block (8 m x 8 m, symmetry on x = 0) in a 16 m x 8 m
+// grid, h = 2 m / a, mp x mp GIMP points per cell, E = 1 MPa, nu = 0.3,
+// rho_y = 20 kPa, unit weight 10 kN/m3 (rho = 1000, g = 10) over 40 load
+// steps, rollers on the base and on the left edge.
+//   ample collapse a=2 mp=3     # h = 1 m, seed 002 table 5: 13.781 / 6.194
+// Outputs: Analysis · results: final extent and height, measured to the edge
+//          of the point domains max(x + lpx), max(y + lpy) (GIMP) or to the
+//          centres plus the initial half spacing h/(2 mp) (MPM, seed 000 table 6)
+// Tests:   tests/test_setups.cpp, tests/test_collapse.cpp
+//--------------------------------------------------------------------------
+#include "ample/formCoord2D.h"
+#include "setupHelpers.h"
+#include "setupList.h"
+#include <cmath>
+
+namespace ample::collapse {
+
+Params params() {
+  Params P = commonParams(40);
+  setDefault(P, "mp", 3);
+  setDefault(P, "cmType", 2);
+  setDefault(P, "E", 1e6);
+  setDefault(P, "nu", 0.3);
+  setDefault(P, "rhoY", 20e3);
+  P.push_back({"a", 2, 1, 64, false, false, true, "grid refinement: h = 2 m / a"});
+  P.push_back({"rho", 1000, 0, INFINITY, false, true, false, "density (kg/m3)"});
+  P.push_back({"g", 10, 0, INFINITY, false, true, false, "gravitational acceleration (m/s2)"});
+  return P;
+}
+
+Analysis setupGrid(const Params& P) {
+  const int a = int(get(P, "a"));
+  Analysis an;
+  an.lstps = int(get(P, "lstps"));
+  an.g = get(P, "g");
+  an.tol = get(P, "tol");
+  an.NRitMax = int(get(P, "NRitMax"));
+  an.mesh = formCoord2D(8 * a, 4 * a, 16, 8);
+  const double eps = 1e-9 * an.mesh.h(0);
+  fixDofs(an.mesh, 0, [&](double X, double) { return X < eps; });  // left edge
+  fixDofs(an.mesh, 1, [&](double, double Y) { return Y < eps; });  // base
+  fillBlock(an.mpData, Vector2d::Zero(), 4 * a, 4 * a, an.mesh.h, P, get(P, "rho"));
+  return an;
+}
+
+Results results(const Analysis& an, const Params& P) {
+  const double half = an.mesh.h(0) / (2.0 * get(P, "mp"));  // initial half spacing
+  double ext = -INFINITY, hgt = -INFINITY, xMax = -INFINITY, yMax = -INFINITY;
+  for (const MaterialPoint& mp : an.mpData) {
+    const Vector2d l = (mp.mpType == MpType::MPM) ? Vector2d(half, half) : mp.lp;
+    ext = std::max(ext, mp.mpC(0) + l(0));
+    hgt = std::max(hgt, mp.mpC(1) + l(1));
+    xMax = std::max(xMax, mp.mpC(0));
+    yMax = std::max(yMax, mp.mpC(1));
+  }
+  return {{"extent", ext}, {"height", hgt}, {"max_x", xMax}, {"max_y", yMax}};
+}
+
+}  // namespace ample::collapse

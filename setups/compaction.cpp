@@ -1,0 +1,58 @@
+//--------------------------------------------------------------------------
+// compaction — elastic column compacting under its own weight (seed 002 sec 5.1)
+//--------------------------------------------------------------------------
+// Column of height l0 = 50 m, one square cell wide (nelsx = 1), nelsy cells
+// high, E = 10 kPa, nu = 0, rho = 80 kg/m3, g = 10 m/s2 over 40 load steps,
+// mp x mp points per cell (2 x 2), rollers on the base and both sides.
+// Analytic stress (eq 36): sigma_yy = -rho g (l0 - Y), Y the original height;
+// error (eq 37) = sum_p |sigma_yy,p - sigma_yy(Y_p)| V0_p / (rho g l0 V0).
+//   ample compaction nelsy=256 mpType=1     # standard MPM, 256 cells
+// Outputs: Analysis (mesh, mpData, lstps, g) · results: error (eq 37)
+// Tests:   tests/test_setups.cpp, tests/test_compaction.cpp
+//--------------------------------------------------------------------------
+#include "ample/formCoord2D.h"
+#include "setupHelpers.h"
+#include "setupList.h"
+#include <cmath>
+
+namespace ample::compaction {
+
+Params params() {
+  Params P = commonParams(40);
+  setDefault(P, "E", 10e3);
+  setDefault(P, "nu", 0.0);
+  P.push_back({"nelsy", 64, 1, 1 << 22, false, false, true, "cells over the column height"});
+  P.push_back({"l0", 50, 0, INFINITY, true, true, false, "column height (m)"});
+  P.push_back({"rho", 80, 0, INFINITY, false, true, false, "density (kg/m3)"});
+  P.push_back({"g", 10, 0, INFINITY, false, true, false, "gravitational acceleration (m/s2)"});
+  return P;
+}
+
+Analysis setupGrid(const Params& P) {
+  const int nelsy = int(get(P, "nelsy"));
+  const double l0 = get(P, "l0"), lx = l0 / nelsy;  // one square cell wide
+  Analysis an;
+  an.lstps = int(get(P, "lstps"));
+  an.g = get(P, "g");
+  an.tol = get(P, "tol");
+  an.NRitMax = int(get(P, "NRitMax"));
+  an.mesh = formCoord2D(1, nelsy, lx, l0);
+  const double eps = 1e-9 * lx;
+  fixDofs(an.mesh, 0, [&](double X, double) { return X < eps || X > lx - eps; });  // sides
+  fixDofs(an.mesh, 1, [&](double, double Y) { return Y < eps; });                   // base
+  fillBlock(an.mpData, Vector2d::Zero(), 1, nelsy, an.mesh.h, P, get(P, "rho"));
+  return an;
+}
+
+Results results(const Analysis& an, const Params& P) {
+  const double l0 = get(P, "l0"), rho = get(P, "rho"), g = get(P, "g");
+  double V0 = 0.0, err = 0.0;
+  for (const MaterialPoint& mp : an.mpData) {
+    const double sigA = -rho * g * (l0 - mp.X0(1));  // eq 36
+    err += std::abs(mp.sig(1) - sigA) * mp.vp0;
+    V0 += mp.vp0;
+  }
+  return {{"error", err / (rho * g * l0 * V0)}};    // eq 37
+}
+
+}  // namespace ample::compaction
