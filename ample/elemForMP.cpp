@@ -5,6 +5,7 @@
 //--------------------------------------------------------------------------
 #include "elemForMP.h"
 #include "errors.h"
+#include <algorithm>
 #include <cmath>
 #include <sstream>
 
@@ -18,16 +19,18 @@ int elemForMP(const Mesh& mesh, const Vector2d& mpC, const Vector2d& lp,
     const double tol = 1e-9;  // in cell widths
     const double lo = (mpC(i) - lp(i) - mesh.origin(i)) / mesh.h(i);
     const double hi = (mpC(i) + lp(i) - mesh.origin(i)) / mesh.h(i);
-    first[i] = int(std::floor(lo + tol));
-    last[i] = std::max(first[i], int(std::ceil(hi - tol)) - 1);
-    if (!(lo > -tol && hi < nels[i] + tol) || first[i] < 0 || last[i] >= nels[i]) {
+    const double c = (mpC(i) - mesh.origin(i)) / mesh.h(i);  // point centre, in cells
+    if (!(c > -tol && c < nels[i] + tol)) {
       std::ostringstream msg;
-      msg << "material point at (" << mpC(0) << ", " << mpC(1) << ") with domain half lengths ("
-          << lp(0) << ", " << lp(1) << ") reaches outside the background grid [" << mesh.origin(0)
-          << ", " << mesh.origin(0) + mesh.nelsx * mesh.h(0) << "] x [" << mesh.origin(1) << ", "
-          << mesh.origin(1) + mesh.nelsy * mesh.h(1) << "]";
+      msg << "material point at (" << mpC(0) << ", " << mpC(1) << ") has left the background grid ["
+          << mesh.origin(0) << ", " << mesh.origin(0) + mesh.nelsx * mesh.h(0) << "] x ["
+          << mesh.origin(1) << ", " << mesh.origin(1) + mesh.nelsy * mesh.h(1) << "]";
       throw RunError(msg.str());
     }
+    first[i] = int(std::floor(lo + tol));
+    last[i] = std::max(first[i], int(std::ceil(hi - tol)) - 1);
+    first[i] = std::clamp(first[i], 0, nels[i] - 1);  // a domain reaching past the grid
+    last[i] = std::clamp(last[i], 0, nels[i] - 1);    // edge is cut there, as in the paper
   }
   if ((last[0] - first[0] + 1) * (last[1] - first[1] + 1) > MAXE)
     throw RunError("material point domain overlaps more than 3 x 3 cells (lp > h): refine "

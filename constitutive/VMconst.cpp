@@ -17,7 +17,7 @@ ConstOut VMconst(const Vector6d& epsEtr, const Vector3d& mCst) {
   const Vector6d s = out.Ksig - p * m;                  // deviatoric trial stress
   const double rho = std::sqrt(s.head<3>().squaredNorm() + 2.0 * s.tail<3>().squaredNorm());
   const double f = rho / rhoY - 1.0;                    // yield function (eq 11)
-  if (!(f > 0.0)) return out;                           // elastic: trial state stands
+  if (!(f > 1e-9)) return out;                          // elastic: trial state stands
 
   const double theta = rhoY / rho;                      // radial return factor
   const double K = E / (3.0 * (1.0 - 2.0 * nu)), G = E / (2.0 * (1.0 + nu));
