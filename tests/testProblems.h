@@ -1,0 +1,48 @@
+// testProblems.h — small problems built in code for the tests (not a test file itself)
+#pragma once
+#include "ample/elemMPinfo.h"
+#include "ample/formCoord2D.h"
+#include "setups/setupHelpers.h"
+#include "setups/setups.h"
+#include <random>
+
+namespace ample::testing {
+
+// a 4 x 4 grid of 1 m cells with an mp x mp block of points filling cells [1,3) x [1,3)
+inline Analysis smallBlock(MpType mpType, CmType cmType, int mp = 2) {
+  Params P = commonParams(1);
+  setDefault(P, "mp", mp);
+  setDefault(P, "mpType", int(mpType));
+  setDefault(P, "cmType", int(cmType));
+  setDefault(P, "E", 1e6);
+  setDefault(P, "nu", 0.3);
+  setDefault(P, "rhoY", 2e3);
+  Analysis an;
+  an.mesh = formCoord2D(4, 4, 4.0, 4.0);
+  fillBlock(an.mpData, Vector2d(1, 1), 2, 2, an.mesh.h, P, 1000.0);
+  return an;
+}
+
+// give every point a converged, non-trivial state (Fn, epsEn) so that stress,
+// geometric stiffness and (for von Mises) plastic flow all enter the tangent
+inline void prestrain(std::vector<MaterialPoint>& mpData, unsigned seed) {
+  std::mt19937 gen(seed);
+  std::uniform_real_distribution<double> r(-1.0, 1.0);
+  for (MaterialPoint& mp : mpData) {
+    mp.Fn << 1 + 0.05 * r(gen), 0.05 * r(gen), 0, 0.05 * r(gen), 1 + 0.05 * r(gen), 0, 0, 0, 1;
+    mp.epsEn << 1e-3 * r(gen), 1e-3 * r(gen), 1e-3 * r(gen), 1e-3 * r(gen), 0, 0;
+  }
+}
+
+// random displacement increment on the nodes linked to the points
+inline Eigen::VectorXd randomUvw(const Analysis& an, double size, unsigned seed) {
+  std::mt19937 gen(seed);
+  std::uniform_real_distribution<double> r(-1.0, 1.0);
+  Eigen::VectorXd uvw = Eigen::VectorXd::Zero(an.mesh.nDoF());
+  for (const MaterialPoint& mp : an.mpData)
+    for (int v = 0; v < mp.nn; ++v)
+      for (int i = 0; i < nD; ++i) uvw(dof(mp.nIN[v], i)) = size * r(gen);
+  return uvw;
+}
+
+}  // namespace ample::testing

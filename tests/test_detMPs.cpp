@@ -1,0 +1,83 @@
+// Tests of detMPs (the material point loop): the assembled tangent against
+// central finite differences of the assembled internal force, and a
+// homogeneous-deformation patch test.
+#include "ample/detMPs.h"
+#include "constitutive/Hooke3d.h"
+#include "ample/tensorOps.h"
+#include "testProblems.h"
+#include <doctest/doctest.h>
+#include <cmath>
+
+using namespace ample;
+
+namespace {
+// relative difference |Kt - Kfd| / |Kt| over the columns of the linked dofs
+double tangentError(Analysis& an, const Eigen::VectorXd& uvw) {
+  const DetMPsOut base = detMPs(uvw, an.mpData);
+  const Eigen::MatrixXd Kt = Eigen::MatrixXd(base.Kt);
+  Eigen::MatrixXd Kfd = Eigen::MatrixXd::Zero(Kt.rows(), Kt.cols());
+  const double d = 1e-7;
+  for (int c = 0; c < uvw.size(); ++c) {
+    if (Kt.col(c).norm() == 0.0) continue;  // dof not linked to any point
+    Eigen::VectorXd up = uvw, um = uvw;
+    up(c) += d;
+    um(c) -= d;
+    Kfd.col(c) = (detMPs(up, an.mpData).fint - detMPs(um, an.mpData).fint) / (2 * d);
+  }
+  return (Kt - Kfd).norm() / Kt.norm();
+}
+}  // namespace
+
+TEST_SUITE("detMPs") {
+  TEST_CASE("detMPs: tangent equals central differences of fint (elastic, plastic; MPM, GIMP)") {
+    for (MpType t : {MpType::MPM, MpType::GIMP})
+      for (CmType c : {CmType::Elastic, CmType::VonMises}) {
+        CAPTURE(int(t));
+        CAPTURE(int(c));
+        Analysis an = testing::smallBlock(t, c);
+        testing::prestrain(an.mpData, 7);
+        elemMPinfo(an.mesh, an.mpData);
+        const Eigen::VectorXd uvw = testing::randomUvw(an, 0.02, 11);
+        if (c == CmType::VonMises) {  // every point must be yielding for a smooth FD
+          detMPs(uvw, an.mpData);
+          for (const MaterialPoint& mp : an.mpData) {  // Kirchhoff stress on the surface
+            const Vector6d tau = mp.sig * mp.F.determinant();
+            const double p = tau.head<3>().sum() / 3.0;
+            const double rho = std::sqrt((tau.head<3>().array() - p).square().sum() +
+                                         2.0 * tau.tail<3>().squaredNorm());
+            REQUIRE(rho == doctest::Approx(mp.mCst(2)).epsilon(1e-10));
+          }
+        }
+        CHECK(tangentError(an, uvw) < 1e-6);
+      }
+  }
+
+  TEST_CASE("detMPs: zero increment on an unstressed body gives zero internal force") {
+    Analysis an = testing::smallBlock(MpType::GIMP, CmType::Elastic);
+    elemMPinfo(an.mesh, an.mpData);
+    const DetMPsOut out = detMPs(Eigen::VectorXd::Zero(an.mesh.nDoF()), an.mpData);
+    CHECK(out.fint.norm() == 0.0);
+  }
+
+  TEST_CASE("detMPs: homogeneous deformation gives uniform stress and no interior force") {
+    for (MpType t : {MpType::MPM, MpType::GIMP}) {
+      Analysis an = testing::smallBlock(t, CmType::Elastic, 3);
+      elemMPinfo(an.mesh, an.mpData);
+      Eigen::Matrix2d H;
+      H << 0.10, 0.04, -0.03, -0.05;  // displacement gradient of the patch
+      Eigen::VectorXd uvw(an.mesh.nDoF());
+      for (int n = 0; n < an.mesh.nodes(); ++n)
+        uvw.segment<2>(2 * n) = H * an.mesh.coord.row(n).transpose();
+      const DetMPsOut out = detMPs(uvw, an.mpData);
+
+      Matrix3d F = Matrix3d::Identity();  // analytic Hencky stress of F = I + H
+      F.topLeftCorner<2, 2>() += H;
+      const Vector6d eps = tensorToStrain(0.5 * symLog(F * F.transpose()));
+      const Vector6d sigA = Hooke3d(eps, an.mpData[0].mCst).Ksig / F.determinant();
+      for (const MaterialPoint& mp : an.mpData)
+        CHECK((mp.sig - sigA).norm() <= 1e-10 * sigA.norm());
+      const int centre = 2 * 5 + 2;  // node (2, 2): interior to the block
+      CHECK(out.fint.segment<2>(2 * centre).norm() <= 1e-10 * sigA.norm());
+    }
+  }
+}
