@@ -1,0 +1,115 @@
+// Tests of the output (postPro, makeVtk, makeVtkMP, writeOutput): files
+// written by a short run are read back and compared with the state in memory.
+#include "ample/ample.h"
+#include "testProblems.h"
+#include <doctest/doctest.h>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+using namespace ample;
+
+namespace {
+std::vector<std::vector<double>> readCsv(const std::string& path, std::string& header) {
+  std::ifstream f(path);
+  std::getline(f, header);
+  std::vector<std::vector<double>> rows;
+  for (std::string line; std::getline(f, line);) {
+    std::vector<double> row;
+    std::stringstream s(line);
+    for (std::string cell; std::getline(s, cell, ',');) row.push_back(std::stod(cell));
+    rows.push_back(row);
+  }
+  return rows;
+}
+std::string slurp(const std::string& path) {
+  std::ifstream f(path);
+  return std::string(std::istreambuf_iterator<char>(f), {});
+}
+}  // namespace
+
+TEST_SUITE("output") {
+  TEST_CASE("output: CSV, JSON and VTK of a compaction run read back") {
+    const std::string dir = std::string(AMPLE_TEST_TMP) + "/output_compaction";
+    const Setup* s = findSetup("compaction");
+    Params P = s->params();
+    setDefault(P, "nelsy", 4);
+    setDefault(P, "lstps", 2);
+    setDefault(P, "E", 1e6);  // stiff enough for two load steps
+    RunOptions opt{dir, 1, true};
+    REQUIRE(ample::ample(*s, P, opt) == 0);
+
+    std::string header;
+    const auto mp = readCsv(dir + "/mp_final.csv", header);
+    CHECK(header == "X0,Y0,x,y,V0,V,sxx,syy,szz,sxy,syz,szx,lpx,lpy");
+    REQUIRE(mp.size() == 16);  // 4 cells x 2 x 2 points
+    double V0 = 0, weightOnBase = 0;
+    for (const auto& r : mp) {
+      REQUIRE(r.size() == 14);
+      CHECK(r[0] == doctest::Approx(r[2]).epsilon(1e-12));     // rollers: no sideways motion
+      CHECK(r[3] < r[1]);                                      // every point moves down
+      V0 += r[4];
+      weightOnBase += r[4] * 80 * 10;
+    }
+    CHECK(V0 == doctest::Approx(50 * 12.5).epsilon(1e-12));    // column 50 m x 12.5 m
+    const auto steps = readCsv(dir + "/steps.csv", header);
+    CHECK(header == "lstp,load_factor,NRit,fErr,converged,seconds");
+    REQUIRE(steps.size() == 2);
+    CHECK(steps[1][1] == doctest::Approx(1.0));
+    CHECK(steps[1][3] <= 1e-9);
+    const auto res = readCsv(dir + "/residuals.csv", header);
+    int passes = 0;
+    for (const auto& r : res) passes += r[0] == 2;
+    CHECK(passes == int(steps[1][2]));                         // one row per pass
+
+    const std::string vtk = slurp(dir + "/mpData_2.vtk");
+    CHECK(vtk.rfind("# vtk DataFile Version 2.0", 0) == 0);
+    std::stringstream v(vtk.substr(vtk.find("POINTS")));
+    std::string word, type;
+    int n;
+    v >> word >> n >> type;
+    REQUIRE(n == 16);
+    for (int p = 0; p < n; ++p) {
+      double x, y, z;
+      v >> x >> y >> z;
+      CHECK(x == doctest::Approx(mp[p][2]).epsilon(1e-13));
+      CHECK(y == doctest::Approx(mp[p][3]).epsilon(1e-13));
+    }
+    CHECK(slurp(dir + "/mesh.vtk").find("CELLS 4 20") != std::string::npos);
+    const std::string json = slurp(dir + "/summary.json");
+    CHECK(json.find("\"converged\": true") != std::string::npos);
+    CHECK(json.find("\"nmp\": 16") != std::string::npos);
+    CHECK(json.find("\"error\": ") != std::string::npos);
+    CHECK(weightOnBase == doctest::Approx(80 * 10 * 50 * 12.5));
+  }
+
+  TEST_CASE("output: --vtk 0 writes no VTK, and a rerun removes the old step files") {
+    const std::string dir = std::string(AMPLE_TEST_TMP) + "/output_novtk";
+    const Setup* s = findSetup("compaction");
+    Params P = s->params();
+    setDefault(P, "nelsy", 4);
+    setDefault(P, "lstps", 3);
+    setDefault(P, "E", 1e6);
+    REQUIRE(ample::ample(*s, P, RunOptions{dir, 1, true}) == 0);
+    CHECK(std::filesystem::exists(dir + "/mpData_3.vtk"));
+    setDefault(P, "lstps", 2);
+    REQUIRE(ample::ample(*s, P, RunOptions{dir, 0, true}) == 0);
+    CHECK(!std::filesystem::exists(dir + "/mpData_3.vtk"));
+    CHECK(!std::filesystem::exists(dir + "/mesh.vtk"));
+    CHECK(std::filesystem::exists(dir + "/summary.json"));
+  }
+
+  TEST_CASE("output: a load step that does not converge stops the run with status 1") {
+    const std::string dir = std::string(AMPLE_TEST_TMP) + "/output_fail";
+    const Setup* s = findSetup("collapse");
+    Params P = s->params();
+    setDefault(P, "lstps", 2);
+    setDefault(P, "NRitMax", 2);  // too few passes to reach 1e-9
+    CHECK(ample::ample(*s, P, RunOptions{dir, 1, true}) == 1);
+    const std::string json = slurp(dir + "/summary.json");
+    CHECK(json.find("\"converged\": false") != std::string::npos);
+    CHECK(json.find("\"last_converged_step\": 0") != std::string::npos);
+    CHECK(json.find("load step 1 did not converge") != std::string::npos);
+    CHECK(!std::filesystem::exists(dir + "/mpData_1.vtk"));
+  }
+}
