@@ -38,26 +38,33 @@ Eigen::VectorXd solveLoadStep(Analysis& an, int lstp, RunLog& log, bool quiet) {
   double fErr = 1.0;
   int NRit = 0;
   SpMat Kt(nDoF, nDoF);
-  while ((fErr > an.tol && NRit < an.NRitMax) || NRit < 2) {
-    const LinSolveOut ls = linSolve(mesh.bc, Kt, oobf, NRit, fd); log.t.linSolve += sw.lap();
-    uvw += ls.duvw;
-    frct += ls.drct;
-    DetMPsOut mps = detMPs(uvw, an.mpData);                      log.t.detMPs += sw.lap();
-    Kt = std::move(mps.Kt);
-    oobf = fext - mps.fint + frct;                               // eq 31 with reactions
-    fErr = oobf.norm() / std::max((fext + frct).norm(), 1e-300); // eq 35
-    log.residuals.push_back({lstp, NRit, fErr});
-    if (!quiet) std::printf("  iteration %2d  NR error %10.3e\n", NRit + 1, fErr);
-    NRit++;
-    if (!std::isfinite(fErr)) break;
+  try {
+    while ((fErr > an.tol && NRit < an.NRitMax) || NRit < 2) {
+      const LinSolveOut ls = linSolve(mesh.bc, Kt, oobf, NRit, fd); log.t.linSolve += sw.lap();
+      uvw += ls.duvw;
+      frct += ls.drct;
+      DetMPsOut mps = detMPs(uvw, an.mpData);                    log.t.detMPs += sw.lap();
+      Kt = std::move(mps.Kt);
+      oobf = fext - mps.fint + frct;                             // eq 31 with reactions
+      fErr = oobf.norm() / std::max((fext + frct).norm(), 1e-300); // eq 35
+      log.residuals.push_back({lstp, NRit, fErr});
+      if (!quiet) std::printf("  iteration %2d  NR error %10.3e\n", NRit + 1, fErr);
+      NRit++;
+      if (!std::isfinite(fErr)) break;
+    }
+  } catch (const RunError&) {                                    // e.g. a singular stiffness
+    log.totalNRit += NRit;
+    log.steps.push_back({lstp, double(lstp) / an.lstps, NRit, fErr, false, 0.0});
+    throw;
   }
   log.totalNRit += NRit;
   log.steps.push_back({lstp, double(lstp) / an.lstps, NRit, fErr, fErr <= an.tol, 0.0});
-  if (!(fErr <= an.tol))
-    throw RunError("load step " + std::to_string(lstp) + " did not converge: fErr = " +
-                   std::to_string(fErr) + " > tol = " + std::to_string(an.tol) + " after " +
-                   std::to_string(NRit) + " Newton-Raphson passes (NRitMax = " +
-                   std::to_string(an.NRitMax) + ")");
+  if (!(fErr <= an.tol)) {
+    char msg[200];
+    std::snprintf(msg, sizeof msg, "load step %d did not converge: fErr = %.3e > tol = %.1e "
+                  "after %d Newton-Raphson passes (NRitMax = %d)", lstp, fErr, an.tol, NRit, an.NRitMax);
+    throw RunError(msg);
+  }
   return uvw;
 }
 

@@ -7,8 +7,8 @@
 // "touching" allows a round-off of 1e-9 h). A standard MPM point (l_p = 0)
 // belongs to the cell containing it; on a cell edge, to the cell above/right.
 // The grid is regular, so the cells follow from the spacing without a search.
-// Inputs:  mesh (nelsx, nelsy, h, origin) · mpC (2) · lp (2)
 // A domain reaching past the grid edge uses the cells inside the grid only.
+// Inputs:  mesh (nelsx, nelsy, h, origin) · mpC (2) · lp (2)
 // Outputs: eIN (cells, ascending) · ne (their number); throws RunError if the
 //          point itself is outside the grid or its domain overlaps more than
 //          3 x 3 cells

@@ -1,7 +1,8 @@
 //--------------------------------------------------------------------------
 // beam — large-deflection elastic cantilever with a tip load (seed 002 sec 5.2)
 //--------------------------------------------------------------------------
-// Beam l = 10 m by d = 1 m along the top of an 11 m x 10 m grid, h = 0.5 m / a,
+// Beam l = 10 m by d = 1 m along the top of an 11 m x 10 m grid, h = 0.5 m / a
+// (a = 2: h = 0.25 m as in seed 002 figs 12 and 14),
 // mp x mp GIMP points per cell (6 x 6), E = 12 MPa, nu = 0.2, no gravity.
 // Tip load P = 100 kN downwards, split between the two points nearest the
 // free end either side of the neutral axis, over 50 load steps. Rollers on
@@ -24,7 +25,7 @@ Params params() {
   setDefault(P, "mp", 6);
   setDefault(P, "E", 12e6);
   setDefault(P, "nu", 0.2);
-  P.push_back({"a", 1, 1, 64, false, false, true, "grid refinement: h = 0.5 m / a"});
+  P.push_back({"a", 2, 1, 64, false, false, true, "grid refinement: h = 0.5 m / a"});
   P.push_back({"P", 100e3, 0, INFINITY, false, true, false, "tip load, acting downwards (N)"});
   return P;
 }
