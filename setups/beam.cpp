@@ -9,7 +9,7 @@
 // x = 0 (x fixed), the root pinned at mid-depth (x and y fixed at (0, 9.5)).
 //   ample beam a=2 mp=3
 // Outputs: Analysis · results: tip displacement (mean of the two loaded points)
-// Tests:   tests/test_setups.cpp
+// Tests:   tests/test_ample.cpp (setups run), tests/test_detMPs.cpp
 //--------------------------------------------------------------------------
 #include "ample/formCoord2D.h"
 #include "setupHelpers.h"

@@ -9,7 +9,7 @@
 // Outputs: Analysis · results: final extent and height, measured to the edge
 //          of the point domains max(x + lpx), max(y + lpy) (GIMP) or to the
 //          centres plus the initial half spacing h/(2 mp) (MPM, seed 000 table 6)
-// Tests:   tests/test_setups.cpp, tests/test_collapse.cpp
+// Tests:   tests/test_ample.cpp
 //--------------------------------------------------------------------------
 #include "ample/formCoord2D.h"
 #include "setupHelpers.h"

@@ -8,7 +8,7 @@
 // Inputs:  block corner (x0, y0), its cells (nelsx, nelsy), spacing h,
 //          parameters mp, mpType, cmType, E, nu, rhoY · density rho
 // Outputs: points appended to mpData; fixDofs adds Dirichlet conditions
-// Tests:   tests/test_setups.cpp
+// Tests:   tests/test_ample.cpp (setups run), tests/test_detMPs.cpp
 //--------------------------------------------------------------------------
 #pragma once
 #include "setups.h"
