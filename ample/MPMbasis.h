@@ -3,7 +3,8 @@
 //--------------------------------------------------------------------------
 // Seed 002 eq 22 and footnote 3: S(X,Y) = S(X) S(Y),
 // dS/dX = dS(X) S(Y), dS/dY = S(X) dS(Y), from SvpMPM (mpType 1, eqs 23-24)
-// or SvpGIMP (mpType 2, eqs 25-26) in each direction.
+// or SvpGIMP (mpType 2, eqs 25-26) in each direction. CPDI1/CPDI2 (mpType 3/4,
+// seed 001 sec 2 (iv)): SvpCPDI from the grid basis at the domain corners.
 // Inputs:  coord (nodes x 2) · mp.nIN, mp.nn, mp.mpC, mp.lp, mp.mpType · h (2)
 // Outputs: mp.Svp (nn) · mp.dSvp (2 x nn), gradients with respect to X~ (start of step)
 // Tests:   tests/test_basis.cpp
@@ -14,5 +15,6 @@
 namespace ample {
 
 void MPMbasis(const Mesh& mesh, MaterialPoint& mp);
+double gridBasis(const Mesh& mesh, int node, const Vector2d& x);  // bi-linear grid basis N_node(x)
 
 }  // namespace ample

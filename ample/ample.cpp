@@ -43,7 +43,7 @@ Eigen::VectorXd solveLoadStep(Analysis& an, int lstp, RunLog& log, bool quiet) {
       const LinSolveOut ls = linSolve(mesh.bc, Kt, oobf, NRit, fd); log.t.linSolve += sw.lap();
       uvw += ls.duvw;
       frct += ls.drct;
-      DetMPsOut mps = detMPs(uvw, an.mpData);                    log.t.detMPs += sw.lap();
+      DetMPsOut mps = detMPs(uvw, an.mpData, an.formulation);                    log.t.detMPs += sw.lap();
       Kt = std::move(mps.Kt);
       oobf = fext - mps.fint + frct;                             // eq 31 with reactions
       fErr = oobf.norm() / std::max((fext + frct).norm(), 1e-300); // eq 35
@@ -87,7 +87,7 @@ int ample(const Setup& setup, const Params& P, const RunOptions& opt) {
       sw.lap();
       const Eigen::VectorXd uvw = solveLoadStep(an, lstp, log, opt.quiet);
       Stopwatch swU;
-      updateMPs(uvw, an.mpData);                                 log.t.updateMPs += swU.lap();
+      updateMPs(an.mesh, uvw, an.domainUpdate, an.mpData);                                 log.t.updateMPs += swU.lap();
       postPro(an.mesh, an.mpData, lstp, opt.vtkEvery, opt.outDir); log.t.postPro += swU.lap();
       log.steps.back().seconds = sw.lap();
       log.lastConverged = lstp;

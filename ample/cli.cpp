@@ -25,7 +25,10 @@ static void setParam(Params& P, const std::string& name, const std::string& text
                      const Setup& setup) {
   for (Param& p : P) {
     if (p.name != name) continue;
-    const double v = parseNumber(name, text);
+    double v = NAN;
+    for (size_t k = 0; k < p.names.size(); ++k)  // a value given by name, e.g. mpType=CPDI2
+      if (text == p.names[k]) v = p.lo + double(k);
+    if (std::isnan(v)) v = parseNumber(name, text);
     const bool inRange = (p.loOpen ? v > p.lo : v >= p.lo) && (p.hiOpen ? v < p.hi : v <= p.hi);
     if (!inRange || (p.integer && v != std::floor(v)))
       throw InputError("parameter '" + name + "' = " + text + " is out of range: allowed " +

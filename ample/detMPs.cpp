@@ -6,12 +6,13 @@
 #include "detMPs.h"
 #include "constitutive/Hooke3d.h"
 #include "constitutive/VMconst.h"
-#include "formULstiff.h"
+#include "formPCstiff.h"
 #include "tensorOps.h"
 
 namespace ample {
 
-DetMPsOut detMPs(const Eigen::VectorXd& uvw, std::vector<MaterialPoint>& mpData) {
+DetMPsOut detMPs(const Eigen::VectorXd& uvw, std::vector<MaterialPoint>& mpData,
+                 Formulation form) {
   const int nDoF = int(uvw.size());
   DetMPsOut out{Eigen::VectorXd::Zero(nDoF), SpMat(nDoF, nDoF)};
   size_t nSMe = 0;  // number of stiffness matrix entries
@@ -33,17 +34,30 @@ DetMPsOut detMPs(const Eigen::VectorXd& uvw, std::vector<MaterialPoint>& mpData)
                                                        : VMconst(epsEtr, mp.mCst);
     mp.epsE = cm.epsE;
     mp.sig = cm.Ksig / mp.F.determinant();                        // eq 6
-    const Matrix9d A = formULstiff(mp.F, cm.D, mp.sig, BeT);      // seed 000 eq A.1
 
-    const Eigen::Matrix2d iF = dF.topLeftCorner<2, 2>().inverse();
-    Eigen::Matrix<double, nD, MAXN> dSx;                          // eq 18: dS/dx
-    dSx.leftCols(mp.nn) = iF.transpose() * mp.dSvp.leftCols(mp.nn);
-    const double Vp = dF.determinant() * mp.vp;                   // eq 15
+    Matrix9d A;                                                   // tangent
+    Eigen::Matrix2d Sf;                                           // stress paired with dSx
+    Eigen::Matrix<double, nD, MAXN> dSx;                          // basis gradients
+    double Vp;                                                    // volume
+    if (form == Formulation::UL) {                                // seed 002 eqs 14-18
+      A = formULstiff(mp.F, cm.D, mp.sig, BeT);                   // seed 000 eq A.1
+      const Eigen::Matrix2d iF = dF.topLeftCorner<2, 2>().inverse();
+      dSx.leftCols(mp.nn) = iF.transpose() * mp.dSvp.leftCols(mp.nn);  // eq 18: dS/dx
+      Vp = dF.determinant() * mp.vp;                              // eq 15
+      Sf = stressToTensor(mp.sig).topLeftCorner<2, 2>();
+    } else {                                                      // seed 000 eqs 18-23
+      const double Jn = mp.Fn.determinant();
+      const Matrix3d tau = stressToTensor(cm.Ksig);
+      A = formPCstiff(dF, Jn, cm.D, tau, bEn, BeT);               // seed 000 eq A.3
+      dSx.leftCols(mp.nn) = mp.dSvp.leftCols(mp.nn);              // dS/dX~, no mapping
+      Vp = mp.vp;                                                 // V_p^n (eq 22)
+      Sf = (tau * dF.inverse().transpose() / Jn).topLeftCorner<2, 2>();  // P~ (eq 18)
+    }
 
     for (int a = 0; a < mp.nn; ++a)
       for (int i = 0; i < nD; ++i) {
         double fa = 0.0;                                          // eq 16
-        for (int j = 0; j < nD; ++j) fa += dSx(j, a) * mp.sig(i == j ? i : 3);
+        for (int j = 0; j < nD; ++j) fa += dSx(j, a) * Sf(i, j);
         out.fint(dof(mp.nIN[a], i)) += fa * Vp;
         for (int b = 0; b < mp.nn; ++b)
           for (int k = 0; k < nD; ++k) {

@@ -10,9 +10,13 @@
 //   dS/dx = dS/dX~ dF^-1                         (eq 18)
 //   k_p = [dS/dx]' a [dS/dx] V_p, f_p = [dS/dx]' sigma V_p, V_p = det(dF) V_p,n
 //                                                (eqs 14-16, a from formULstiff)
-// and assembles Kt = A k_p, fint = A f_p (eqs 30-31). Plane strain: only the
-// in-plane displacement gradient enters; F, b_e and stress are 3D.
-// Inputs:  uvw (nDoF) displacement increment of the step · mpData
+// and assembles Kt = A k_p, fint = A f_p (eqs 30-31). With form = PC the
+// previously converged formulation of seed 000 sec 5 is used instead:
+//   k_p = [dS/dX~]' A~ [dS/dX~] V_p^n, f_p = [dS/dX~]' P~ V_p^n, P~ = tau dF^-T / Jn
+//   (eqs 18, 21-23, A~ from formPCstiff); both give the same equilibrium.
+// Plane strain: only the in-plane displacement gradient enters; F, b_e and
+// stress are 3D.
+// Inputs:  uvw (nDoF) displacement increment of the step · mpData · form
 // Outputs: fint (nDoF) · Kt (nDoF x nDoF) · mpData (F, sig, epsE) updated
 // Tests:   tests/test_detMPs.cpp
 //--------------------------------------------------------------------------
@@ -27,6 +31,7 @@ struct DetMPsOut {
   SpMat Kt;              // global tangent stiffness
 };
 
-DetMPsOut detMPs(const Eigen::VectorXd& uvw, std::vector<MaterialPoint>& mpData);
+DetMPsOut detMPs(const Eigen::VectorXd& uvw, std::vector<MaterialPoint>& mpData,
+                 Formulation form = Formulation::UL);
 
 }  // namespace ample

@@ -3,7 +3,9 @@
 //--------------------------------------------------------------------------
 // Seed 002 sec 4, table 1: called once at the start of each load step, with
 // the positions and domains at the start of the step (X~); marks the active
-// cells (those linked to any point) for detFDoFs.
+// cells (those linked to any point) for detFDoFs. GIMP/MPM points take the
+// cells their domain overlaps (elemForMP); CPDI points the cells holding their
+// four domain corners (seed 001 sec 2 (iii)).
 // Inputs:  mesh · mpData (mpC, lp, mpType)
 // Outputs: mpData (eIN, ne, nIN, nn, Svp, dSvp) · mesh.eInA (nels)
 // Tests:   tests/test_basis.cpp

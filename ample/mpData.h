@@ -25,8 +25,12 @@ constexpr int nen = 4;       // nodes per grid cell (bi-linear quadrilateral)
 constexpr int MAXN = 16;     // most nodes one point may influence (4 x 4)
 constexpr int MAXE = 9;      // most cells one point domain may overlap (3 x 3)
 
-enum class MpType { MPM = 1, GIMP = 2 };          // seed 002: mpType
-enum class CmType { Elastic = 1, VonMises = 2 };  // seed 002: cmType
+enum class MpType { MPM = 1, GIMP = 2, CPDI1 = 3, CPDI2 = 4 };  // seed 002: mpType (+ seed 001)
+enum class CmType { Elastic = 1, VonMises = 2 };                 // seed 002: cmType
+enum class Formulation { UL = 1, PC = 2 };  // updated / previously converged Lagrangian (seed 000)
+enum class DomainUpdate {                   // GIMP domain updating, seed 000 sec 6.4, table 2
+  None = 0, DetF = 1, Fii = 2, Uii = 3, Corner = 4, FiiVol = 5, FiiVolInc = 6
+};  //  -     eq 32     eq 33    eq 34    eqs 35-37   eq 38      eq 39
 
 struct MaterialPoint {
   MpType mpType = MpType::GIMP;            // material point type
@@ -51,7 +55,14 @@ struct MaterialPoint {
   Vector2d u = Vector2d::Zero();           // total displacement
   Vector2d lp = Vector2d::Zero();          // domain half lengths (0 for MPM)
   Vector2d lp0 = Vector2d::Zero();         // original domain half lengths
+  Eigen::Matrix2d st0 = Eigen::Matrix2d::Zero();  // CPDI1: original domain vectors s, t (columns)
+  Eigen::Matrix2d st = Eigen::Matrix2d::Zero();   // CPDI1: current domain vectors s = F s0, t = F t0
+  Eigen::Matrix<double, nD, 4> xc = Eigen::Matrix<double, nD, 4>::Zero();  // CPDI2: domain corners
 };
+
+inline bool isCPDI(const MaterialPoint& mp) {
+  return mp.mpType == MpType::CPDI1 || mp.mpType == MpType::CPDI2;
+}
 
 // degree of freedom i (0 = x, 1 = y) of node `node` (0-based); written once here
 inline int dof(int node, int i) { return nD * node + i; }

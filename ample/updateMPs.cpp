@@ -4,6 +4,7 @@
 // Seed 002 eqs 15, 33, 34. See updateMPs.h for inputs and outputs.
 //--------------------------------------------------------------------------
 #include "updateMPs.h"
+#include "updateDomain.h"
 #include <Eigen/Eigenvalues>
 
 namespace ample {
@@ -14,20 +15,18 @@ Matrix3d stretchTensor(const Matrix3d& F) {
   return es.eigenvectors() * s.asDiagonal() * es.eigenvectors().transpose();
 }
 
-void updateMPs(const Eigen::VectorXd& uvw, std::vector<MaterialPoint>& mpData) {
+void updateMPs(const Mesh& mesh, const Eigen::VectorXd& uvw, DomainUpdate method,
+               std::vector<MaterialPoint>& mpData) {
   for (MaterialPoint& mp : mpData) {
     Vector2d du = Vector2d::Zero();                      // eq 33
     for (int v = 0; v < mp.nn; ++v)
       for (int i = 0; i < nD; ++i) du(i) += mp.Svp[v] * uvw(dof(mp.nIN[v], i));
     mp.mpC += du;
     mp.u += du;
+    mp.vp = mp.F.determinant() * mp.vp0;                 // eq 15
+    updateDomain(mesh, uvw, method, mp);                 // eq 34 and the alternatives
     mp.Fn = mp.F;
     mp.epsEn = mp.epsE;
-    mp.vp = mp.F.determinant() * mp.vp0;                 // eq 15
-    if (mp.mpType == MpType::GIMP) {                     // eq 34
-      const Matrix3d U = stretchTensor(mp.F);
-      mp.lp = mp.lp0.cwiseProduct(Vector2d(U(0, 0), U(1, 1)));
-    }
   }
 }
 

@@ -4,11 +4,12 @@
 // Seed 002 sec 3.4:
 //   x_p = X~_p + sum_v S_vp du_v     (eq 33), also the total displacement u
 //   V_p = det(F) V_p^0               (eq 15)
-//   GIMP: l_p,i = l_p,i^0 U_ii       (eq 34), U = sqrt(F'F) the material stretch
+//   domains: updateDomain (GIMP eq 34 by default, or seed 000 eqs 32-39;
+//            CPDI1/CPDI2 of seed 001), nothing for standard MPM points
 //   Fn = F, eps_e,n = eps_e          (converged state for the next step)
-// Standard MPM points (lp = 0) do no domain work.
-// Inputs:  uvw (nDoF) converged displacement increment of the step · mpData
-// Outputs: mpData (mpC, u, vp, lp, Fn, epsEn) updated
+// Inputs:  mesh · uvw (nDoF) converged displacement increment of the step ·
+//          method (GIMP domain update) · mpData
+// Outputs: mpData (mpC, u, vp, lp, st, xc, Fn, epsEn) updated
 // Tests:   tests/test_updateMPs.cpp
 //--------------------------------------------------------------------------
 #pragma once
@@ -17,6 +18,7 @@
 namespace ample {
 
 Matrix3d stretchTensor(const Matrix3d& F);  // U = sqrt(F'F), the right stretch tensor
-void updateMPs(const Eigen::VectorXd& uvw, std::vector<MaterialPoint>& mpData);
+void updateMPs(const Mesh& mesh, const Eigen::VectorXd& uvw, DomainUpdate method,
+               std::vector<MaterialPoint>& mpData);
 
 }  // namespace ample

@@ -32,10 +32,7 @@ Params params() {
 
 Analysis setupGrid(const Params& P) {
   const int a = int(get(P, "a"));
-  Analysis an;
-  an.lstps = int(get(P, "lstps"));
-  an.tol = get(P, "tol");
-  an.NRitMax = int(get(P, "NRitMax"));
+  Analysis an = baseAnalysis(P);
   an.mesh = formCoord2D(22 * a, 20 * a, lx, ly);
   const Vector2d h = an.mesh.h;
   const double eps = 1e-9 * h(0), yNA = ly - d / 2;  // neutral axis

@@ -33,11 +33,8 @@ Params params() {
 
 Analysis setupGrid(const Params& P) {
   const int a = int(get(P, "a"));
-  Analysis an;
-  an.lstps = int(get(P, "lstps"));
+  Analysis an = baseAnalysis(P);
   an.g = get(P, "g");
-  an.tol = get(P, "tol");
-  an.NRitMax = int(get(P, "NRitMax"));
   an.mesh = formCoord2D(8 * a, 4 * a, 16, 8);
   const double eps = 1e-9 * an.mesh.h(0);
   fixDofs(an.mesh, 0, [&](double X, double) { return X < eps; });  // left edge

@@ -31,11 +31,8 @@ Params params() {
 Analysis setupGrid(const Params& P) {
   const int nelsy = int(get(P, "nelsy"));
   const double l0 = get(P, "l0"), lx = l0 / nelsy;  // one square cell wide
-  Analysis an;
-  an.lstps = int(get(P, "lstps"));
+  Analysis an = baseAnalysis(P);
   an.g = get(P, "g");
-  an.tol = get(P, "tol");
-  an.NRitMax = int(get(P, "NRitMax"));
   an.mesh = formCoord2D(1, nelsy, lx, l0);
   const double eps = 1e-9 * lx;
   fixDofs(an.mesh, 0, [&](double X, double) { return X < eps || X > lx - eps; });  // sides

@@ -9,6 +9,16 @@
 
 namespace ample {
 
+Analysis baseAnalysis(const Params& P) {
+  Analysis an;
+  an.lstps = int(get(P, "lstps"));
+  an.tol = get(P, "tol");
+  an.NRitMax = int(get(P, "NRitMax"));
+  an.formulation = Formulation(int(get(P, "formulation")));
+  an.domainUpdate = DomainUpdate(int(get(P, "domainUpdate")));
+  return an;
+}
+
 void fillBlock(std::vector<MaterialPoint>& mpData, const Vector2d& corner, int nelsx, int nelsy,
                const Vector2d& h, const Params& P, double rho) {
   const int mp = int(get(P, "mp"));
@@ -26,6 +36,10 @@ void fillBlock(std::vector<MaterialPoint>& mpData, const Vector2d& corner, int n
         pt.X0 = pt.mpC;
         pt.lp0 = h / (2.0 * mp);
         pt.vp0 = pt.vp = 4.0 * pt.lp0(0) * pt.lp0(1);
+        pt.st0 = pt.st = (2.0 * pt.lp0).asDiagonal();      // CPDI1 domain vectors s, t
+        for (int c = 0; c < 4; ++c)                         // rectangle corners (CPDI2)
+          pt.xc.col(c) = pt.mpC + Vector2d((c == 1 || c == 2) ? pt.lp0(0) : -pt.lp0(0),
+                                           (c >= 2) ? pt.lp0(1) : -pt.lp0(1));
         if (pt.mpType == MpType::MPM) pt.lp0.setZero();  // standard MPM carries no domain
         pt.lp = pt.lp0;
         pt.mpM = rho * pt.vp0;

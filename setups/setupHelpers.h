@@ -16,6 +16,10 @@
 
 namespace ample {
 
+// an Analysis with the settings every setup shares: lstps, tol, NRitMax,
+// formulation, domainUpdate (g is set by the setups that have gravity)
+Analysis baseAnalysis(const Params& P);
+
 void fillBlock(std::vector<MaterialPoint>& mpData, const Vector2d& corner, int nelsx, int nelsy,
                const Vector2d& h, const Params& P, double rho);
 

@@ -43,8 +43,11 @@ std::string rangeText(const Param& p) {
     s << v;
     return s.str();
   };
-  return std::string(p.integer ? "integer in " : "") + (p.loOpen ? "(" : "[") + num(p.lo) +
-         ", " + num(p.hi) + (p.hiOpen ? ")" : "]");
+  std::string text = std::string(p.integer ? "integer in " : "") + (p.loOpen ? "(" : "[") +
+                     num(p.lo) + ", " + num(p.hi) + (p.hiOpen ? ")" : "]");
+  for (size_t k = 0; k < p.names.size(); ++k)
+    text += (k ? ", " : " or by name: ") + num(p.lo + k) + " " + p.names[k];
+  return text;
 }
 
 Params commonParams(int lstps) {
@@ -53,9 +56,13 @@ Params commonParams(int lstps) {
       {"lstps", double(lstps), 1, 1e6, false, false, true, "number of equal load steps"},
       {"tol", 1e-9, 0, 1, true, true, false, "Newton-Raphson tolerance on fErr (eq 35)"},
       {"NRitMax", 10, 2, 1000, false, false, true, "most Newton-Raphson passes per load step"},
-      {"mpType", 2, 1, 2, false, false, true, "material point type: 1 MPM, 2 GIMP"},
+      {"mpType", 2, 1, 4, false, false, true, "material point type", {"MPM", "GIMP", "CPDI1", "CPDI2"}},
       {"mp", 2, 1, 20, false, false, true, "material points per cell in each direction"},
-      {"cmType", 1, 1, 2, false, false, true, "constitutive model: 1 elastic, 2 von Mises"},
+      {"cmType", 1, 1, 2, false, false, true, "constitutive model", {"elastic", "VM"}},
+      {"formulation", 1, 1, 2, false, false, true,
+       "equilibrium frame: updated or previously converged Lagrangian (seed 000)", {"UL", "PC"}},
+      {"domainUpdate", 3, 0, 6, false, false, true, "GIMP domain update (seed 000 eqs 32-39)",
+       {"none", "detF", "Fii", "Uii", "corner", "FiiVol", "FiiVolInc"}},
       {"E", 1.0, 0, inf, true, true, false, "Young's modulus (Pa)"},
       {"nu", 0.0, -1, 0.5, true, true, false, "Poisson's ratio"},
       {"rhoY", 20e3, 0, inf, true, true, false, "von Mises strength rho_y = sqrt(2 J2) at yield (Pa)"},

@@ -21,6 +21,7 @@ struct Param {
   bool loOpen, hiOpen;   // true: the bound itself is excluded
   bool integer;          // must be a whole number
   std::string help;      // meaning and unit
+  std::vector<std::string> names = {};  // optional names of the values lo, lo+1, ...
 };
 using Params = std::vector<Param>;
 
@@ -34,6 +35,8 @@ struct Analysis {
   double g = 0;                       // gravitational acceleration (m/s2), acting in -y
   double tol = 1e-9;                  // Newton-Raphson tolerance on fErr (eq 35)
   int NRitMax = 10;                   // most Newton-Raphson passes per load step
+  Formulation formulation = Formulation::UL;        // frame of equilibrium (seed 000)
+  DomainUpdate domainUpdate = DomainUpdate::Uii;    // GIMP domain update (seed 002 eq 34)
 };
 
 using Results = std::vector<std::pair<std::string, double>>;  // named figures of a run

@@ -29,6 +29,10 @@ TEST_SUITE("cli") {
     CHECK(r.options.quiet);
     CHECK(r.options.outDir == "x/y");
     CHECK(parseArgs({"beam"}).options.outDir == "output/beam");
+    const CliRequest n = parseArgs({"collapse", "mpType=CPDI2", "formulation=PC", "domainUpdate=corner"});
+    CHECK(get(n.params, "mpType") == 4);  // values may be given by name
+    CHECK(get(n.params, "formulation") == 2);
+    CHECK(get(n.params, "domainUpdate") == 4);
   }
 
   TEST_CASE("cli: bad input is refused with a message naming the parameter and range") {
@@ -38,8 +42,8 @@ TEST_SUITE("cli") {
         {"compaction", "nelsy=0"},   {"compaction", "mp=abc"},  {"compaction", "foo=1"},
         {"compaction", "E="},        {"compaction", "=3"},      {"compaction", "E=nan"},
         {"compaction", "E=inf"},     {"compaction", "--vtk"},   {"compaction", "--vtk", "-1"},
-        {"compaction", "--out"},     {"compaction", "mpType=3"}, {"compaction", "tol=0"},
-        {"compaction", "stray"}};
+        {"compaction", "--out"},     {"compaction", "mpType=5"}, {"compaction", "tol=0"},
+        {"compaction", "stray"},     {"compaction", "mpType=CPDI3"}, {"compaction", "domainUpdate=7"}};
     for (const auto& args : bad) {
       CAPTURE(args.size());
       CHECK_THROWS_AS(parseArgs(args), InputError);

@@ -1,0 +1,36 @@
+//--------------------------------------------------------------------------
+// formPCstiff — consistent tangent of the previously converged formulation
+//--------------------------------------------------------------------------
+// Seed 000 eqs A.3-A.6. See formPCstiff.h for inputs and outputs.
+//--------------------------------------------------------------------------
+#include "formPCstiff.h"
+
+namespace ample {
+
+Matrix9d formPCstiff(const Matrix3d& dF, double Jn, const Matrix6d& D, const Matrix3d& tau,
+                     const Matrix3d& bEn, const Matrix3d& BeT) {
+  constexpr int voigt[3][3] = {{0, 3, 5}, {3, 1, 4}, {5, 4, 2}};
+  const Matrix3d bFt = bEn * dF.transpose(), Fb = dF * bEn, iF = dF.inverse();
+  Matrix9d D9, Bt;
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j)
+      for (int k = 0; k < 3; ++k)
+        for (int l = 0; l < 3; ++l) {
+          D9(3 * i + j, 3 * k + l) = D(voigt[i][j], voigt[k][l]);
+          Bt(3 * i + j, 3 * k + l) = (i == k ? bFt(l, j) : 0.0) + (j == k ? Fb(i, l) : 0.0);  // A.5
+        }
+  const Matrix9d T = 0.5 * D9 * dLogdB(BeT) * Bt;                                       // A.4
+  Matrix9d A = Matrix9d::Zero();
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j)
+      for (int k = 0; k < 3; ++k)
+        for (int l = 0; l < 3; ++l) {
+          double a = 0.0;
+          for (int m = 0; m < 3; ++m)
+            a += T(3 * i + m, 3 * k + l) * iF(j, m) - tau(i, m) * iF(j, k) * iF(l, m);  // A.3, A.6
+          A(3 * i + j, 3 * k + l) = a / Jn;
+        }
+  return A;
+}
+
+}  // namespace ample
