@@ -6,7 +6,7 @@
 // Gravity acts in -y. Uses the basis functions of the start of the step.
 // Inputs:  nDoF · g (m/s2) · mpData (nIN, Svp, mpM, fp)
 // Outputs: fext (nDoF)
-// Tests:   tests/test_detFDoFs.cpp
+// Tests:   tests/test_detExtForce.cpp
 //--------------------------------------------------------------------------
 #pragma once
 #include "mpData.h"

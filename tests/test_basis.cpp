@@ -1,10 +1,12 @@
 // Tests of the basis functions: SvpMPM, SvpGIMP (seed 002 eqs 23-26), MPMbasis
-// (eq 22) and elemMPinfo: partition of unity, gradients against finite
-// differences, continuity across the GIMP regions, GIMP = MPM inside a cell.
+// (eq 22) and elemMPinfo: partition of unity, linear reproduction, gradients
+// against finite differences, continuity across the GIMP regions, GIMP = MPM
+// inside a cell. The points are built by hand on a grid from formCoord2D.
 #include "ample/MPMbasis.h"
 #include "ample/SvpGIMP.h"
 #include "ample/SvpMPM.h"
-#include "testProblems.h"
+#include "ample/elemMPinfo.h"
+#include "ample/formCoord2D.h"
 #include <doctest/doctest.h>
 #include <cmath>
 
@@ -12,115 +14,207 @@ using namespace ample;
 
 namespace {
 const double h = 0.5, lp = 0.1;  // grid spacing and domain half length (lp <= h/2)
-// sum over the nodes of a 1D grid (nodes at k h) of S and dS at position x
-Basis1D sum1D(double x, bool gimp) {
-  Basis1D s{0, 0};
+
+// sums over the nodes of a 1D grid (nodes at k h, k = -4..12) at position x:
+// S, dS and the reproduced position sum_v S_v x_v
+struct Sums {
+  double S = 0, dS = 0, x = 0;
+};
+Sums sum1D(double x, bool gimp, double l = lp) {
+  Sums s;
   for (int k = -4; k <= 12; ++k) {
-    const Basis1D b = gimp ? SvpGIMP(x - k * h, h, lp) : SvpMPM(x - k * h, h);
+    const Basis1D b = gimp ? SvpGIMP(x - k * h, h, l) : SvpMPM(x - k * h, h);
     s.S += b.S;
     s.dS += b.dS;
+    s.x += b.S * k * h;
   }
   return s;
+}
+
+// a point of the given type at x with domain half lengths l, linked to every
+// node of a 3 x 3 grid of 1 m cells (16 nodes = MAXN): nodes outside the
+// support simply get S = 0, so MPMbasis is tested without the cell search
+MaterialPoint pointOnAllNodes(const Mesh& mesh, MpType t, Vector2d x, Vector2d l) {
+  MaterialPoint mp;
+  mp.mpType = t;
+  mp.mpC = x;
+  mp.lp = (t == MpType::GIMP) ? l : Vector2d::Zero();
+  mp.nn = mesh.nodes();
+  for (int v = 0; v < mp.nn; ++v) mp.nIN[v] = v;
+  return mp;
+}
+
+// invariants of a linear-complete basis at one point:
+// sum S = 1, sum S X = x, sum dS = 0, sum X (x) dS = I
+struct Invariants {
+  double unity, position, gradSum, gradX;  // absolute errors
+};
+Invariants invariants(const Mesh& mesh, const MaterialPoint& mp) {
+  double S = 0;
+  Vector2d x = Vector2d::Zero(), dS = Vector2d::Zero();
+  Eigen::Matrix2d gradX = Eigen::Matrix2d::Zero();
+  for (int v = 0; v < mp.nn; ++v) {
+    const Vector2d Xv = mesh.coord.row(mp.nIN[v]).transpose();
+    S += mp.Svp[v];
+    x += mp.Svp[v] * Xv;
+    dS += mp.dSvp.col(v);
+    gradX += Xv * mp.dSvp.col(v).transpose();
+  }
+  return {std::abs(S - 1.0), (x - mp.mpC).norm(), dS.norm(),
+          (gradX - Eigen::Matrix2d::Identity()).norm()};
 }
 }  // namespace
 
 TEST_SUITE("SvpMPM") {
   TEST_CASE("SvpMPM: partition of unity, zero gradient sum, linear reproduction") {
     for (double x = 0.013; x < 4.0; x += 0.0371) {
-      const Basis1D s = sum1D(x, false);
+      CAPTURE(x);
+      const Sums s = sum1D(x, false);
       CHECK(std::abs(s.S - 1.0) <= 1e-14);
       CHECK(std::abs(s.dS) <= 1e-12);
-      double xr = 0;
-      for (int k = -4; k <= 12; ++k) xr += SvpMPM(x - k * h, h).S * k * h;
-      CHECK(std::abs(xr - x) <= 1e-13);
+      CHECK(std::abs(s.x - x) <= 1e-13);
     }
   }
   TEST_CASE("SvpMPM: values of eq 23 and gradients of eq 24") {
     CHECK(SvpMPM(0.0, h).S == 1.0);
     CHECK(SvpMPM(-0.2, h).S == doctest::Approx(0.6).epsilon(1e-14));
+    CHECK(SvpMPM(-0.2, h).dS == doctest::Approx(2.0).epsilon(1e-14));
+    CHECK(SvpMPM(0.2, h).S == doctest::Approx(0.6).epsilon(1e-14));
     CHECK(SvpMPM(0.2, h).dS == doctest::Approx(-2.0).epsilon(1e-14));
     CHECK(SvpMPM(0.6, h).S == 0.0);
+    CHECK(SvpMPM(-0.6, h).dS == 0.0);
   }
 }
 
 TEST_SUITE("SvpGIMP") {
-  TEST_CASE("SvpGIMP: partition of unity and zero gradient sum for lp <= h/2") {
-    for (double x = 0.013; x < 4.0; x += 0.0371) {
-      const Basis1D s = sum1D(x, true);
-      CHECK(std::abs(s.S - 1.0) <= 1e-14);
-      CHECK(std::abs(s.dS) <= 1e-12);
+  TEST_CASE("SvpGIMP: partition of unity, zero gradient sum, linear reproduction for lp <= h/2") {
+    for (double l : {lp, 0.01, h / 2}) {  // h/2: the widest domain allowed (regions B, D vanish)
+      for (double x = 0.013; x < 4.0; x += 0.0371) {
+        CAPTURE(l);
+        CAPTURE(x);
+        const Sums s = sum1D(x, true, l);
+        CHECK(std::abs(s.S - 1.0) <= 1e-14);
+        CHECK(std::abs(s.dS) <= 1e-12);
+        CHECK(std::abs(s.x - x) <= 1e-13);
+      }
     }
   }
   TEST_CASE("SvpGIMP: gradient equals central differences in each region A-E") {
-    for (double d : {-0.55, -0.45, -0.3, -0.05, 0.07, 0.3, 0.45, 0.55}) {  // A A B C C D E E
+    // regions: A A B C C D E E, all at least 0.05 away from a region boundary
+    for (double d : {-0.55, -0.45, -0.3, -0.05, 0.07, 0.3, 0.45, 0.55}) {
       CAPTURE(d);
       const double e = 1e-6;
       const double fd = (SvpGIMP(d + e, h, lp).S - SvpGIMP(d - e, h, lp).S) / (2 * e);
-      CHECK(std::abs(SvpGIMP(d, h, lp).dS - fd) <= 1e-7);
+      CHECK(std::abs(SvpGIMP(d, h, lp).dS - fd) <= 1e-6);
     }
   }
   TEST_CASE("SvpGIMP: value and gradient continuous across the region boundaries") {
-    for (double b : {-h - lp, -h + lp, -lp, lp, h - lp, h + lp}) {
+    // A|B, B|C, C|D, D|E, and the outer ends of A and E (where S and dS reach 0)
+    for (double b : {-h + lp, -lp, lp, h - lp, -h - lp, h + lp}) {
       CAPTURE(b);
-      const Basis1D lo = SvpGIMP(b - 1e-10, h, lp), hi = SvpGIMP(b + 1e-10, h, lp);
-      CHECK(std::abs(lo.S - hi.S) <= 1e-8);
+      const Basis1D lo = SvpGIMP(b - 1e-9, h, lp), hi = SvpGIMP(b + 1e-9, h, lp);
+      CHECK(std::abs(lo.S - hi.S) <= 1e-7);
       CHECK(std::abs(lo.dS - hi.dS) <= 1e-7);
     }
   }
   TEST_CASE("SvpGIMP: equals standard MPM when the domain lies inside one cell") {
     for (double d : {-0.35, -0.2, -0.12, 0.12, 0.25, 0.38}) {  // regions B and D
+      CAPTURE(d);
       CHECK(SvpGIMP(d, h, lp).S == doctest::Approx(SvpMPM(d, h).S).epsilon(1e-14));
       CHECK(SvpGIMP(d, h, lp).dS == doctest::Approx(SvpMPM(d, h).dS).epsilon(1e-14));
     }
     CHECK(SvpGIMP(0.2, h, 0.0).S == SvpMPM(0.2, h).S);  // lp = 0 is standard MPM
   }
-  TEST_CASE("SvpGIMP: the convolution of eq 20 at a point in region C") {
-    // S = (1/2lp) int_{d-lp}^{d+lp} (1 - |s|/h) ds for |d| < lp
-    const double d = 0.04, a = d - lp, b = d + lp;
-    const double exact = (b - a - (a * a + b * b) / (2 * h)) / (2 * lp);
-    CHECK(SvpGIMP(d, h, lp).S == doctest::Approx(exact).epsilon(1e-14));
+  TEST_CASE("SvpGIMP: the convolution of eq 20 in regions C and A") {
+    // S = (1/2lp) int_{d-lp}^{d+lp} N(s) ds, N the hat function 1 - |s|/h
+    const auto hatIntegral = [](double a, double b) {  // int_a^b (1 - |s|/h) ds, |a|,|b| <= h
+      const auto F = [](double s) { return s - s * std::abs(s) / (2 * h); };
+      return F(b) - F(a);
+    };
+    const double dC = 0.04, dA = -0.52;  // region C, and region A (only d+lp > -h overlaps)
+    CHECK(SvpGIMP(dC, h, lp).S ==
+          doctest::Approx(hatIntegral(dC - lp, dC + lp) / (2 * lp)).epsilon(1e-13));
+    CHECK(SvpGIMP(dA, h, lp).S ==
+          doctest::Approx(hatIntegral(-h, dA + lp) / (2 * lp)).epsilon(1e-13));
   }
 }
 
 TEST_SUITE("MPMbasis") {
-  TEST_CASE("MPMbasis: 2D partition of unity and linear reproduction, MPM and GIMP") {
+  TEST_CASE("MPMbasis: 2D partition of unity, zero gradient sum, sum dS (x) X = I, MPM and GIMP") {
+    const Mesh mesh = formCoord2D(3, 3, 3.0, 3.0);  // 16 nodes, h = 1
+    const Vector2d l(0.2, 0.3);                      // GIMP domain half lengths
     for (MpType t : {MpType::MPM, MpType::GIMP}) {
-      Analysis an = testing::smallBlock(t, CmType::Elastic, 3);
-      for (MaterialPoint& mp : an.mpData) mp.mpC += Vector2d(0.13, -0.07);  // off the cell centres
-      elemMPinfo(an.mesh, an.mpData);
-      for (const MaterialPoint& mp : an.mpData) {
-        double S = 0;
-        Vector2d x = Vector2d::Zero(), dS = Vector2d::Zero();
-        Eigen::Matrix2d gradX = Eigen::Matrix2d::Zero();  // sum_v X_v (x) dS_v = I
-        for (int v = 0; v < mp.nn; ++v) {
-          const Vector2d Xv = an.mesh.coord.row(mp.nIN[v]).transpose();
-          S += mp.Svp[v];
-          x += mp.Svp[v] * Xv;
-          dS += mp.dSvp.col(v);
-          gradX += Xv * mp.dSvp.col(v).transpose();
-        }
-        CHECK(std::abs(S - 1.0) <= 1e-14);
-        CHECK((x - mp.mpC).norm() <= 1e-13);
-        CHECK(dS.norm() <= 1e-12);
-        CHECK((gradX - Eigen::Matrix2d::Identity()).norm() <= 1e-12);
+      // inside a cell, straddling a vertical edge, a horizontal edge, a corner
+      for (Vector2d x : {Vector2d(1.45, 1.6), Vector2d(1.9, 1.5), Vector2d(1.37, 2.1),
+                         Vector2d(2.05, 0.92), Vector2d(0.4, 2.5)}) {
+        CAPTURE(int(t));
+        CAPTURE(x.transpose());
+        MaterialPoint mp = pointOnAllNodes(mesh, t, x, l);
+        MPMbasis(mesh, mp);
+        const Invariants e = invariants(mesh, mp);
+        CHECK(e.unity <= 1e-14);
+        CHECK(e.position <= 1e-13);
+        CHECK(e.gradSum <= 1e-12);
+        CHECK(e.gradX <= 1e-12);
       }
     }
   }
-  TEST_CASE("MPMbasis: 2D gradient equals central differences of the basis") {
-    Analysis an = testing::smallBlock(MpType::GIMP, CmType::Elastic, 2);
-    MaterialPoint mp = an.mpData[0];
-    mp.mpC = Vector2d(1.93, 2.08);  // domain straddles a cell corner
-    elemMPinfo(an.mesh, an.mpData);
-    std::vector<MaterialPoint> one{mp};
-    elemMPinfo(an.mesh, one);
+  TEST_CASE("MPMbasis: S(X,Y) = S(X) S(Y) and gradients are its partial derivatives") {
+    const Mesh mesh = formCoord2D(3, 3, 3.0, 3.0);
+    MaterialPoint mp = pointOnAllNodes(mesh, MpType::GIMP, Vector2d(1.93, 2.08), Vector2d(0.2, 0.15));
+    MPMbasis(mesh, mp);
+    for (int v = 0; v < mp.nn; ++v) {  // eq 22 and footnote 3, from the 1D functions
+      const Vector2d d = mp.mpC - mesh.coord.row(v).transpose();
+      const Basis1D bx = SvpGIMP(d(0), 1.0, 0.2), by = SvpGIMP(d(1), 1.0, 0.15);
+      CHECK(std::abs(mp.Svp[v] - bx.S * by.S) <= 1e-15);
+      CHECK(std::abs(mp.dSvp(0, v) - bx.dS * by.S) <= 1e-14);
+      CHECK(std::abs(mp.dSvp(1, v) - bx.S * by.dS) <= 1e-14);
+    }
+    const double e = 1e-6;  // and the gradients against central differences
     for (int i = 0; i < nD; ++i) {
-      MaterialPoint p = one[0], m = one[0];
-      p.mpC(i) += 1e-6;
-      m.mpC(i) -= 1e-6;
-      MPMbasis(an.mesh, p);
-      MPMbasis(an.mesh, m);
-      for (int v = 0; v < one[0].nn; ++v)
-        CHECK(std::abs((p.Svp[v] - m.Svp[v]) / 2e-6 - one[0].dSvp(i, v)) <= 1e-7);
+      MaterialPoint p = mp, m = mp;
+      p.mpC(i) += e;
+      m.mpC(i) -= e;
+      MPMbasis(mesh, p);
+      MPMbasis(mesh, m);
+      for (int v = 0; v < mp.nn; ++v) {
+        CAPTURE(i);
+        CAPTURE(v);
+        CHECK(std::abs((p.Svp[v] - m.Svp[v]) / (2 * e) - mp.dSvp(i, v)) <= 1e-6);
+      }
+    }
+  }
+}
+
+TEST_SUITE("elemMPinfo") {
+  TEST_CASE("elemMPinfo: linked nodes carry a complete linear basis, active cells marked") {
+    for (MpType t : {MpType::MPM, MpType::GIMP}) {
+      Mesh mesh = formCoord2D(4, 4, 4.0, 4.0);
+      std::vector<MaterialPoint> pts(3);
+      const Vector2d x[3] = {Vector2d(1.5, 1.5), Vector2d(2.05, 1.3), Vector2d(2.95, 3.05)};
+      for (int p = 0; p < 3; ++p) {
+        pts[p].mpType = t;
+        pts[p].mpC = x[p];
+        pts[p].lp = (t == MpType::GIMP) ? Vector2d(0.25, 0.25) : Vector2d::Zero();
+      }
+      elemMPinfo(mesh, pts);
+      for (const MaterialPoint& mp : pts) {
+        CAPTURE(int(t));
+        CAPTURE(mp.mpC.transpose());
+        const Invariants e = invariants(mesh, mp);
+        CHECK(e.unity <= 1e-14);
+        CHECK(e.position <= 1e-13);
+        CHECK(e.gradSum <= 1e-12);
+        CHECK(e.gradX <= 1e-12);
+      }
+      // cells holding a point (MPM) or overlapped by a domain (GIMP) are active
+      std::vector<int> active;
+      for (int c = 0; c < mesh.nels(); ++c)
+        if (mesh.eInA[c]) active.push_back(c);
+      if (t == MpType::MPM)
+        CHECK(active == std::vector<int>{5, 6, 14});
+      else  // [1.25,1.75]^2 -> 5; [1.8,2.3]x[1.05,1.55] -> 5,6; [2.7,3.2]x[2.8,3.3] -> 10,11,14,15
+        CHECK(active == std::vector<int>{5, 6, 10, 11, 14, 15});
     }
   }
 }

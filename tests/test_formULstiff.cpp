@@ -1,57 +1,110 @@
-// Tests of formULstiff: the derivative of the matrix logarithm against finite
-// differences (also with repeated eigenvalues) and the small-strain limit of
-// the spatial tangent (seed 000 eqs A.1-A.2).
+// Tests of formULstiff (seed 000 appendix A.1, eqs A.1-A.2): the derivative of
+// the matrix logarithm dLogdB against central differences of symLog (distinct,
+// repeated and nearly repeated eigenvalues) and analytic limits of the spatial
+// tangent a_ijkl at F = I. Tensors are 9x9 matrices, pair (i,j) -> 3i + j.
 #include "ample/formULstiff.h"
 #include "ample/tensorOps.h"
 #include "constitutive/Hooke3d.h"
 #include <doctest/doctest.h>
+#include <cmath>
 
 using namespace ample;
 
 namespace {
-// L applied to symmetric increments against central differences of ln(b)
+using Vector9d = Eigen::Matrix<double, 9, 1>;
+
+Vector9d vec(const Matrix3d& A) {  // pair (i,j) -> 3i + j
+  Vector9d v;
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j) v(3 * i + j) = A(i, j);
+  return v;
+}
+
+// worst relative error of L vec(dB) against central differences of vec(ln b),
+// over the six symmetric directions dB = (e_k e_l' + e_l e_k') / 2
 double dLogError(const Matrix3d& b) {
   const Matrix9d L = dLogdB(b);
-  double worst = 0;
   const double d = 1e-6;
+  double worst = 0;
   for (int k = 0; k < 3; ++k)
     for (int l = k; l < 3; ++l) {
       Matrix3d dB = Matrix3d::Zero();
       dB(k, l) += 0.5;
       dB(l, k) += 0.5;
-      const Matrix3d fd = (symLog(b + d * dB) - symLog(b - d * dB)) / (2 * d);
-      const Eigen::Matrix<double, 9, 1> Ld = L * Eigen::Map<const Eigen::Matrix<double, 9, 1>>(
-                                                     Matrix3d(dB.transpose()).data());
-      Matrix3d Lm;  // row-major pairs (3i + j) back to a matrix
-      for (int i = 0; i < 3; ++i)
-        for (int j = 0; j < 3; ++j) Lm(i, j) = Ld(3 * i + j);
-      worst = std::max(worst, (Lm - fd).norm() / fd.norm());
+      const Vector9d fd = vec(symLog(b + d * dB) - symLog(b - d * dB)) / (2 * d);
+      worst = std::max(worst, (L * vec(dB) - fd).norm() / fd.norm());
     }
   return worst;
+}
+
+Matrix3d rotation(double a, double b) {  // about z by a, then about x by b
+  Matrix3d Rz, Rx;
+  Rz << std::cos(a), -std::sin(a), 0, std::sin(a), std::cos(a), 0, 0, 0, 1;
+  Rx << 1, 0, 0, 0, std::cos(b), -std::sin(b), 0, std::sin(b), std::cos(b);
+  return Rx * Rz;
+}
+
+// c_ij = a_ijkl g_kl
+Matrix3d contract(const Matrix9d& A, const Matrix3d& g) {
+  Matrix3d c = Matrix3d::Zero();
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j)
+      for (int k = 0; k < 3; ++k)
+        for (int l = 0; l < 3; ++l) c(i, j) += A(3 * i + j, 3 * k + l) * g(k, l);
+  return c;
+}
+
+Matrix3d gradU() {  // a small displacement gradient, not symmetric
+  Matrix3d g;
+  g << 1e-3, 4e-4, 0, -2e-4, -5e-4, 0, 0, 0, 0;
+  return g;
 }
 }  // namespace
 
 TEST_SUITE("formULstiff") {
-  TEST_CASE("formULstiff: d ln(b)/db equals central differences, distinct and repeated eigenvalues") {
+  TEST_CASE("dLogdB: equals central differences of symLog, distinct eigenvalues") {
     Matrix3d b;
     b << 1.3, 0.2, 0.0, 0.2, 0.9, 0.0, 0.0, 0.0, 1.0;
-    CHECK(dLogError(b) < 1e-7);
-    CHECK(dLogError(Matrix3d::Identity()) < 1e-7);
-    CHECK(dLogError(Matrix3d(Vector3d(2.0, 2.0, 3.0).asDiagonal())) < 1e-7);
+    CHECK(dLogError(b) < 1e-6);
+    const Matrix3d Q = rotation(0.4, -0.9);  // a full 3D one
+    CHECK(dLogError(Q * Vector3d(0.7, 1.4, 2.3).asDiagonal() * Q.transpose()) < 1e-6);
   }
-  TEST_CASE("formULstiff: at F = I without stress the tangent is the elastic D") {
+  TEST_CASE("dLogdB: equals central differences with two or three equal eigenvalues") {
+    CHECK(dLogError(Matrix3d::Identity()) < 1e-6);
+    CHECK(dLogError(Matrix3d(Vector3d(2.0, 2.0, 3.0).asDiagonal())) < 1e-6);
+    const Matrix3d Q = rotation(0.4, -0.9);  // repeated pair in rotated axes
+    CHECK(dLogError(Q * Vector3d(1.5, 1.5, 0.6).asDiagonal() * Q.transpose()) < 1e-6);
+    // nearly repeated: (ln a - ln b)/(a - b) must not lose its digits as a -> b
+    CHECK(dLogError(Q * Vector3d(1.5, 1.5 * (1 + 1e-11), 0.6).asDiagonal() * Q.transpose()) < 1e-6);
+  }
+  TEST_CASE("dLogdB: at b = I it is the identity on symmetric increments") {
+    Matrix3d dB;
+    dB << 0.3, -0.1, 0.2, -0.1, 0.5, 0.05, 0.2, 0.05, -0.4;
+    CHECK((dLogdB(Matrix3d::Identity()) * vec(dB) - vec(dB)).norm() <= 1e-14);
+  }
+  TEST_CASE("formULstiff: at F = I without stress the tangent gives D : eps (small strain)") {
     const Matrix6d D = elasticStiffness(1e6, 0.25);
     const Matrix9d A = formULstiff(Matrix3d::Identity(), D, Vector6d::Zero(), Matrix3d::Identity());
-    Matrix3d gradU;  // a displacement gradient: only its symmetric part stresses the body
-    gradU << 1e-3, 4e-4, 0, -2e-4, -5e-4, 0, 0, 0, 0;
-    const Matrix3d eps = 0.5 * (gradU + gradU.transpose());
-    const Vector6d sig = D * tensorToStrain(eps);
-    for (int i = 0; i < 3; ++i)
-      for (int j = 0; j < 3; ++j) {
-        double s = 0;
-        for (int k = 0; k < 3; ++k)
-          for (int l = 0; l < 3; ++l) s += A(3 * i + j, 3 * k + l) * gradU(k, l);
-        CHECK(s == doctest::Approx(stressToTensor(sig)(i, j)).epsilon(1e-12).scale(1e3));
-      }
+    const Matrix3d g = gradU();  // only its symmetric part stresses the body
+    const Matrix3d expected = stressToTensor(D * tensorToStrain(0.5 * (g + g.transpose())));
+    CHECK((contract(A, g) - expected).norm() <= 1e-12 * expected.norm());
+  }
+  TEST_CASE("formULstiff: with an initial stress the tangent adds -sigma_il delta_jk") {
+    const Matrix6d D = elasticStiffness(1e6, 0.25);
+    Vector6d sig;
+    sig << 3e3, -1e3, 2e3, 5e2, -4e2, 1e2;
+    const Matrix9d A = formULstiff(Matrix3d::Identity(), D, sig, Matrix3d::Identity());
+    const Matrix3d g = gradU();
+    // a_ijkl g_kl = (D : sym g)_ij - sigma_il g_jl
+    const Matrix3d expected = stressToTensor(D * tensorToStrain(0.5 * (g + g.transpose()))) -
+                              stressToTensor(sig) * g.transpose();
+    CHECK((contract(A, g) - expected).norm() <= 1e-12 * expected.norm());
+  }
+  TEST_CASE("formULstiff: the material part carries the factor 1/J") {
+    const Matrix6d D = elasticStiffness(1e6, 0.25);
+    const Matrix3d F = Vector3d(1.2, 0.9, 1.0).asDiagonal();  // J = 1.08
+    const Matrix9d A1 = formULstiff(Matrix3d::Identity(), D, Vector6d::Zero(), Matrix3d::Identity());
+    const Matrix9d AJ = formULstiff(F, D, Vector6d::Zero(), Matrix3d::Identity());
+    CHECK((AJ * 1.08 - A1).norm() <= 1e-12 * A1.norm());
   }
 }

@@ -7,74 +7,148 @@
 #include "ample/nodesForMP.h"
 #include "ample/shapefunc.h"
 #include <doctest/doctest.h>
+#include <cmath>
+#include <vector>
 
 using namespace ample;
 
 namespace {
-int cellsOf(const Mesh& mesh, Vector2d x, Vector2d lp, std::array<int, MAXE>& e) {
-  return elemForMP(mesh, x, lp, e);
+// the cells elemForMP links to a point at x with domain half lengths lp
+std::vector<int> cellsOf(const Mesh& mesh, Vector2d x, Vector2d lp) {
+  std::array<int, MAXE> e;
+  const int ne = elemForMP(mesh, x, lp, e);
+  return std::vector<int>(e.begin(), e.begin() + ne);
+}
+std::vector<int> nodesOf(const Mesh& mesh, std::vector<int> cells) {
+  std::array<int, MAXE> e;
+  std::copy(cells.begin(), cells.end(), e.begin());
+  std::array<int, MAXN> n;
+  const int nn = nodesForMP(mesh, e, int(cells.size()), n);
+  return std::vector<int>(n.begin(), n.begin() + nn);
 }
 }  // namespace
 
-TEST_SUITE("grid") {
-  TEST_CASE("formCoord2D: node coordinates and anticlockwise cells of positive area") {
+TEST_SUITE("formCoord2D") {
+  TEST_CASE("formCoord2D: node count, coordinates row by row, spacing") {
     const Mesh m = formCoord2D(3, 2, 6.0, 2.0);
     REQUIRE(m.nodes() == 12);
     REQUIRE(m.nels() == 6);
+    CHECK(m.nelsx == 3);
+    CHECK(m.nelsy == 2);
     CHECK(m.h == Vector2d(2.0, 1.0));
-    CHECK(m.coord(11, 0) == 6.0);
-    CHECK(m.coord(11, 1) == 2.0);
+    for (int j = 0; j <= 2; ++j)
+      for (int i = 0; i <= 3; ++i) {  // x fastest
+        CAPTURE(i);
+        CAPTURE(j);
+        CHECK(std::abs(m.coord(4 * j + i, 0) - 2.0 * i) <= 1e-14);
+        CHECK(std::abs(m.coord(4 * j + i, 1) - 1.0 * j) <= 1e-14);
+      }
+  }
+  TEST_CASE("formCoord2D: cells anticlockwise from the lower-left node, positive area h_x h_y") {
+    const Mesh m = formCoord2D(3, 2, 6.0, 2.0);
     for (int e = 0; e < m.nels(); ++e) {
-      double area = 0;  // shoelace formula
+      CAPTURE(e);
+      double area = 0;  // shoelace formula: positive for anticlockwise nodes
       for (int a = 0; a < nen; ++a) {
         const int p = m.etpl(e, a), q = m.etpl(e, (a + 1) % nen);
         area += 0.5 * (m.coord(p, 0) * m.coord(q, 1) - m.coord(q, 0) * m.coord(p, 1));
       }
       CHECK(area == doctest::Approx(2.0).epsilon(1e-14));
+      const int ll = m.etpl(e, 0);  // lower-left node of cell (e % 3, e / 3)
+      CHECK(m.coord(ll, 0) == doctest::Approx(2.0 * (e % 3)).epsilon(1e-14).scale(1.0));
+      CHECK(m.coord(ll, 1) == doctest::Approx(1.0 * (e / 3)).epsilon(1e-14).scale(1.0));
     }
   }
+}
+
+TEST_SUITE("detMpPos") {
   TEST_CASE("detMpPos: mp x mp points, symmetric, spacing 2/mp inside [-1, 1]") {
     for (int mp = 1; mp <= 6; ++mp) {
+      CAPTURE(mp);
       const Eigen::MatrixX2d p = detMpPos(mp);
       REQUIRE(p.rows() == mp * mp);
-      CHECK(std::abs(p.col(0).sum()) <= 1e-13);
+      CHECK(std::abs(p.col(0).sum()) <= 1e-13);  // symmetric about the cell centre
       CHECK(std::abs(p.col(1).sum()) <= 1e-13);
       CHECK(p.cwiseAbs().maxCoeff() == doctest::Approx(1.0 - 1.0 / mp).epsilon(1e-14));
+      for (int i = 0; i < mp; ++i)  // (2i+1)/mp - 1, xi outer, eta inner
+        for (int j = 0; j < mp; ++j) {
+          CHECK(std::abs(p(i * mp + j, 0) - ((2.0 * i + 1) / mp - 1)) <= 1e-15);
+          CHECK(std::abs(p(i * mp + j, 1) - ((2.0 * j + 1) / mp - 1)) <= 1e-15);
+        }
       if (mp > 1) CHECK(p(1, 1) - p(0, 1) == doctest::Approx(2.0 / mp).epsilon(1e-14));
     }
   }
+}
+
+TEST_SUITE("shapefunc") {
   TEST_CASE("shapefunc: partition of unity and Kronecker property at the corners") {
     const double c[4][2] = {{-1, -1}, {1, -1}, {1, 1}, {-1, 1}};
     for (int a = 0; a < 4; ++a) {
       const Eigen::Vector4d N = shapefunc(Vector2d(c[a][0], c[a][1]));
       for (int b = 0; b < 4; ++b) CHECK(N(b) == (a == b ? 1.0 : 0.0));
     }
-    CHECK(shapefunc(Vector2d(0.3, -0.7)).sum() == doctest::Approx(1.0).epsilon(1e-15));
+    for (Vector2d xi : {Vector2d(0.3, -0.7), Vector2d(0, 0), Vector2d(-0.9, 0.45)}) {
+      const Eigen::Vector4d N = shapefunc(xi);
+      CHECK(N.sum() == doctest::Approx(1.0).epsilon(1e-15));
+      Vector2d x = Vector2d::Zero();  // reproduces the local coordinates (linear completeness)
+      for (int a = 0; a < 4; ++a) x += N(a) * Vector2d(c[a][0], c[a][1]);
+      CHECK((x - xi).norm() <= 1e-15);
+    }
+    CHECK(shapefunc(Vector2d(0, 0))(2) == doctest::Approx(0.25).epsilon(1e-15));
   }
-  TEST_CASE("elemForMP: cells of points and domains near cell edges") {
+}
+
+TEST_SUITE("elemForMP") {
+  // 4 x 4 cells of 1 m; cell (i, j) is number 4 j + i
+  TEST_CASE("elemForMP: a point strictly inside a cell has that cell only") {
+    const Mesh m = formCoord2D(4, 4, 4.0, 4.0);
+    CHECK(cellsOf(m, Vector2d(1.5, 1.5), Vector2d::Zero()) == std::vector<int>{5});
+    CHECK(cellsOf(m, Vector2d(3.9, 0.1), Vector2d::Zero()) == std::vector<int>{3});
+    CHECK(cellsOf(m, Vector2d(1.5, 1.5), Vector2d(0.2, 0.3)) == std::vector<int>{5});
+  }
+  TEST_CASE("elemForMP: an MPM point on a cell edge belongs to the cell to the right / above") {
+    const Mesh m = formCoord2D(4, 4, 4.0, 4.0);
+    CHECK(cellsOf(m, Vector2d(2.0, 1.5), Vector2d::Zero()) == std::vector<int>{6});   // right
+    CHECK(cellsOf(m, Vector2d(1.5, 2.0), Vector2d::Zero()) == std::vector<int>{9});   // above
+    CHECK(cellsOf(m, Vector2d(2.0, 2.0), Vector2d::Zero()) == std::vector<int>{10});  // corner
+  }
+  TEST_CASE("elemForMP: a GIMP domain straddling an edge has 2 cells, a corner 4") {
+    const Mesh m = formCoord2D(4, 4, 4.0, 4.0);
+    CHECK(cellsOf(m, Vector2d(2.05, 1.5), Vector2d(0.1, 0.1)) == std::vector<int>{5, 6});
+    CHECK(cellsOf(m, Vector2d(1.5, 1.95), Vector2d(0.1, 0.1)) == std::vector<int>{5, 9});
+    CHECK(cellsOf(m, Vector2d(1.95, 2.05), Vector2d(0.1, 0.1)) == std::vector<int>{5, 6, 9, 10});
+  }
+  TEST_CASE("elemForMP: a cell that only touches the domain edge is not linked") {
+    const Mesh m = formCoord2D(4, 4, 4.0, 4.0);
+    // domain [1.5, 2] x [1.25, 1.75]: its right edge is the cell edge x = 2
+    CHECK(cellsOf(m, Vector2d(1.75, 1.5), Vector2d(0.25, 0.25)) == std::vector<int>{5});
+    // domain [2, 2.5] x [1, 1.5]: left edge x = 2 and bottom edge y = 1
+    CHECK(cellsOf(m, Vector2d(2.25, 1.25), Vector2d(0.25, 0.25)) == std::vector<int>{6});
+    // the domain [1, 2] x [1, 2] fills cell 5 exactly
+    CHECK(cellsOf(m, Vector2d(1.5, 1.5), Vector2d(0.5, 0.5)) == std::vector<int>{5});
+  }
+  TEST_CASE("elemForMP: a domain reaching past the grid edge keeps the cells inside") {
+    const Mesh m = formCoord2D(4, 4, 4.0, 4.0);
+    CHECK(cellsOf(m, Vector2d(0.05, 0.05), Vector2d(0.1, 0.1)) == std::vector<int>{0});
+  }
+  TEST_CASE("elemForMP: a point outside the grid throws RunError") {
     const Mesh m = formCoord2D(4, 4, 4.0, 4.0);
     std::array<int, MAXE> e;
-    CHECK(cellsOf(m, Vector2d(1.5, 1.5), Vector2d::Zero(), e) == 1);
-    CHECK(e[0] == 5);
-    REQUIRE(cellsOf(m, Vector2d(2.0, 1.5), Vector2d::Zero(), e) == 1);  // MPM on an edge
-    CHECK(e[0] == 6);                                                   // the cell to the right
-    CHECK(cellsOf(m, Vector2d(2.05, 1.5), Vector2d(0.1, 0.1), e) == 2);  // straddles x = 2
-    CHECK(cellsOf(m, Vector2d(1.95, 2.05), Vector2d(0.1, 0.1), e) == 4); // a corner
-    CHECK(cellsOf(m, Vector2d(1.75, 1.5), Vector2d(0.25, 0.25), e) == 1); // touches x = 2 only
-    CHECK(e[0] == 5);
-    CHECK(cellsOf(m, Vector2d(0.05, 0.05), Vector2d(0.1, 0.1), e) == 1);  // cut at the grid edge
-    CHECK_THROWS_AS(cellsOf(m, Vector2d(4.2, 1.0), Vector2d::Zero(), e), RunError);
-    CHECK_THROWS_AS(cellsOf(m, Vector2d(1.0, -0.1), Vector2d(0.2, 0.2), e), RunError);
+    CHECK_THROWS_AS(elemForMP(m, Vector2d(4.2, 1.0), Vector2d::Zero(), e), RunError);
+    CHECK_THROWS_AS(elemForMP(m, Vector2d(1.0, -0.1), Vector2d(0.2, 0.2), e), RunError);
+    CHECK_THROWS_AS(elemForMP(m, Vector2d(-0.5, 5.0), Vector2d::Zero(), e), RunError);
   }
+}
+
+TEST_SUITE("nodesForMP") {
   TEST_CASE("nodesForMP: unique ascending nodes of 1, 2 and 4 cells") {
-    const Mesh m = formCoord2D(4, 4, 4.0, 4.0);
-    std::array<int, MAXN> n;
-    std::array<int, MAXE> e{5, 6, 9, 10};
-    CHECK(nodesForMP(m, e, 1, n) == 4);
-    CHECK(nodesForMP(m, e, 2, n) == 6);
-    REQUIRE(nodesForMP(m, e, 4, n) == 9);
-    for (int k = 1; k < 9; ++k) CHECK(n[k] > n[k - 1]);
-    CHECK(n[0] == 6);
-    CHECK(n[8] == 18);
+    const Mesh m = formCoord2D(4, 4, 4.0, 4.0);  // 5 nodes per row
+    CHECK(nodesOf(m, {5}) == std::vector<int>{6, 7, 11, 12});
+    CHECK(nodesOf(m, {5, 6}) == std::vector<int>{6, 7, 8, 11, 12, 13});
+    CHECK(nodesOf(m, {5, 9}) == std::vector<int>{6, 7, 11, 12, 16, 17});
+    CHECK(nodesOf(m, {5, 6, 9, 10}) == std::vector<int>{6, 7, 8, 11, 12, 13, 16, 17, 18});
+    const std::vector<int> n9 = nodesOf(m, {0, 1, 2, 4, 5, 6, 8, 9, 10});  // 3 x 3 cells
+    REQUIRE(n9.size() == 16);
+    for (size_t k = 1; k < n9.size(); ++k) CHECK(n9[k] > n9[k - 1]);
   }
 }

@@ -2,26 +2,70 @@
 // of symmetric tensors (seed 002 eqs 9-10).
 #include "ample/tensorOps.h"
 #include <doctest/doctest.h>
+#include <cmath>
 
 using namespace ample;
 
+namespace {
+Matrix3d spd() {  // a symmetric positive definite tensor with distinct eigenvalues
+  Matrix3d A;
+  A << 2.0, 0.3, -0.1, 0.3, 1.5, 0.2, -0.1, 0.2, 0.8;
+  return A;
+}
+}  // namespace
+
 TEST_SUITE("tensorOps") {
-  TEST_CASE("tensorOps: strain and stress 6-vectors round trip; strain carries engineering shear") {
+  TEST_CASE("tensorOps: strain 6-vector <-> tensor round trip; the vector carries engineering shear") {
     Vector6d v;
     v << 1, 2, 3, 4, 5, 6;
-    CHECK(tensorToStrain(strainToTensor(v)) == v);
-    CHECK(tensorToStress(stressToTensor(v)) == v);
-    CHECK(strainToTensor(v)(0, 1) == 2.0);  // gamma_xy / 2
-    CHECK(stressToTensor(v)(0, 1) == 4.0);
-    CHECK(strainToTensor(v)(2, 0) == 3.0);
+    const Matrix3d e = strainToTensor(v);
+    CHECK(tensorToStrain(e) == v);
+    CHECK((e - e.transpose()).norm() == 0.0);
+    CHECK(e(0, 0) == 1.0);
+    CHECK(e(2, 2) == 3.0);
+    CHECK(e(0, 1) == 2.0);  // gamma_xy / 2
+    CHECK(e(1, 2) == 2.5);  // gamma_yz / 2
+    CHECK(e(2, 0) == 3.0);  // gamma_zx / 2
   }
-  TEST_CASE("tensorOps: symExp and symLog are inverse; known values") {
-    Matrix3d A;
-    A << 2.0, 0.3, -0.1, 0.3, 1.5, 0.2, -0.1, 0.2, 0.8;  // symmetric positive definite
-    CHECK((symExp(symLog(A)) - A).norm() <= 1e-13);
-    CHECK((symExp(Matrix3d::Zero()) - Matrix3d::Identity()).norm() <= 1e-15);
+  TEST_CASE("tensorOps: stress 6-vector <-> tensor round trip; the vector carries tensor shear") {
+    Vector6d v;
+    v << 1, 2, 3, 4, 5, 6;
+    const Matrix3d s = stressToTensor(v);
+    CHECK(tensorToStress(s) == v);
+    CHECK((s - s.transpose()).norm() == 0.0);
+    CHECK(s(0, 1) == 4.0);
+    CHECK(s(1, 2) == 5.0);
+    CHECK(s(2, 0) == 6.0);
+    // work conjugacy: sigma : eps (tensors) = sigma_v . eps_v (6-vectors)
+    Vector6d eps;
+    eps << 0.1, -0.2, 0.3, 0.4, -0.5, 0.6;
+    const double tensorWork = (stressToTensor(v).cwiseProduct(strainToTensor(eps))).sum();
+    CHECK(tensorWork == doctest::Approx(v.dot(eps)).epsilon(1e-14));
+  }
+  TEST_CASE("tensorOps: symExp(symLog(A)) = A for SPD A and symLog(symExp(B)) = B") {
+    const Matrix3d A = spd();
+    CHECK((symExp(symLog(A)) - A).norm() <= 1e-13 * A.norm());
+    Matrix3d B;  // any symmetric tensor, eigenvalues of either sign
+    B << -0.4, 0.2, 0.1, 0.2, 0.3, -0.25, 0.1, -0.25, 0.05;
+    CHECK((symLog(symExp(B)) - B).norm() <= 1e-13);
+    CHECK(std::abs(symLog(A).trace() - std::log(A.determinant())) <= 1e-13);  // tr ln = ln det
+  }
+  TEST_CASE("tensorOps: log of a diagonal tensor, exp of zero, repeated eigenvalues") {
     const Matrix3d L = symLog(Vector3d(1.0, std::exp(2.0), std::exp(-1.0)).asDiagonal());
     CHECK((L - Matrix3d(Vector3d(0, 2, -1).asDiagonal())).norm() <= 1e-14);
-    CHECK(std::abs(symLog(A).trace() - std::log(A.determinant())) <= 1e-13);
+    CHECK((symExp(Matrix3d::Zero()) - Matrix3d::Identity()).norm() <= 1e-15);
+    CHECK(symLog(Matrix3d::Identity()).norm() <= 1e-15);
+    const Matrix3d E2 = symExp(Matrix3d(Vector3d(0.5, 0.5, -0.2).asDiagonal()));
+    CHECK((E2 - Matrix3d(Vector3d(std::exp(0.5), std::exp(0.5), std::exp(-0.2)).asDiagonal()))
+              .norm() <= 1e-14);
+  }
+  TEST_CASE("tensorOps: symExp is the exponential of a rotated diagonal tensor, Q exp(L) Q'") {
+    const double a = 0.7;
+    Matrix3d Q;
+    Q << std::cos(a), -std::sin(a), 0, std::sin(a), std::cos(a), 0, 0, 0, 1;
+    const Vector3d lam(0.3, -0.6, 1.1);
+    const Matrix3d B = Q * lam.asDiagonal() * Q.transpose();
+    const Matrix3d expected = Q * Vector3d(lam.array().exp()).asDiagonal() * Q.transpose();
+    CHECK((symExp(B) - expected).norm() <= 1e-13 * expected.norm());
   }
 }
