@@ -21,6 +21,7 @@
 #include "plotting/postPro.h"
 #include "plotting/writeOutput.h"
 #include "updateMPs.h"
+#include <cfloat>
 #include <cstdio>
 #include <iostream>
 
@@ -46,7 +47,7 @@ Eigen::VectorXd solveLoadStep(Analysis& an, int lstp, RunLog& log, bool quiet) {
       DetMPsOut mps = detMPs(uvw, an.mpData, an.formulation);                    log.t.detMPs += sw.lap();
       Kt = std::move(mps.Kt);
       oobf = fext - mps.fint + frct;                             // eq 31 with reactions
-      fErr = oobf.norm() / std::max((fext + frct).norm(), 1e-300); // eq 35
+      fErr = oobf.norm() / (fext + frct).array().abs().cwiseMax(DBL_EPSILON).matrix().norm(); // eq 35
       log.residuals.push_back({lstp, NRit, fErr});
       if (!quiet) std::printf("  iteration %2d  NR error %10.3e\n", NRit + 1, fErr);
       NRit++;
@@ -59,6 +60,7 @@ Eigen::VectorXd solveLoadStep(Analysis& an, int lstp, RunLog& log, bool quiet) {
   }
   log.totalNRit += NRit;
   log.steps.push_back({lstp, double(lstp) / an.lstps, NRit, fErr, fErr <= an.tol, 0.0});
+  an.frct = frct;
   if (!(fErr <= an.tol)) {
     char msg[200];
     std::snprintf(msg, sizeof msg, "load step %d did not converge: fErr = %.3e > tol = %.1e "
@@ -66,6 +68,14 @@ Eigen::VectorXd solveLoadStep(Analysis& an, int lstp, RunLog& log, bool quiet) {
     throw RunError(msg);
   }
   return uvw;
+}
+
+void loadStep(Analysis& an, int lstp, RunLog& log, bool quiet) {
+  if (an.beforeStep) an.beforeStep(an, lstp);
+  const Eigen::VectorXd uvw = solveLoadStep(an, lstp, log, quiet);
+  Stopwatch sw;
+  updateMPs(an.mesh, uvw, an.domainUpdate, an.mpData);           log.t.updateMPs += sw.lap();
+  if (an.afterStep) an.afterStep(an, lstp);
 }
 
 void restoreConverged(std::vector<MaterialPoint>& mpData) {
@@ -85,10 +95,9 @@ int ample(const Setup& setup, const Params& P, const RunOptions& opt) {
     for (int lstp = 1; lstp <= an.lstps; ++lstp) {               // load steps
       if (!opt.quiet) std::printf("%s: load step %d of %d\n", setup.name, lstp, an.lstps);
       sw.lap();
-      const Eigen::VectorXd uvw = solveLoadStep(an, lstp, log, opt.quiet);
-      Stopwatch swU;
-      updateMPs(an.mesh, uvw, an.domainUpdate, an.mpData);                                 log.t.updateMPs += swU.lap();
-      postPro(an.mesh, an.mpData, lstp, opt.vtkEvery, opt.outDir); log.t.postPro += swU.lap();
+      loadStep(an, lstp, log, opt.quiet);
+      Stopwatch swP;
+      postPro(an.mesh, an.mpData, lstp, opt.vtkEvery, opt.outDir); log.t.postPro += swP.lap();
       log.steps.back().seconds = sw.lap();
       log.lastConverged = lstp;
     }

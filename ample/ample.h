@@ -29,6 +29,9 @@ int ample(const Setup& setup, const Params& P, const RunOptions& opt);
 // returns uvw, the converged displacement increment of the step
 Eigen::VectorXd solveLoadStep(Analysis& an, int lstp, RunLog& log, bool quiet);
 
+// one load step: the setup's beforeStep, solveLoadStep, updateMPs, the setup's afterStep
+void loadStep(Analysis& an, int lstp, RunLog& log, bool quiet);
+
 // undo the point loop's trial state (F, epsE, sig) back to the converged one
 void restoreConverged(std::vector<MaterialPoint>& mpData);
 

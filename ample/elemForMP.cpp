@@ -27,8 +27,15 @@ int elemForMP(const Mesh& mesh, const Vector2d& mpC, const Vector2d& lp,
           << mesh.origin(1) << ", " << mesh.origin(1) + mesh.nelsy * mesh.h(1) << "]";
       throw RunError(msg.str());
     }
-    first[i] = int(std::floor(lo + tol));
-    last[i] = std::max(first[i], int(std::ceil(hi - tol)) - 1);
+    if (lp(i) > 0.0) {
+      first[i] = int(std::floor(lo + tol));
+      last[i] = std::max(first[i], int(std::ceil(hi - tol)) - 1);
+    } else {  // MPM: the cell with X_k < x <= X_k+1, the intervals SvpMPM uses (eq 23)
+      int k = std::clamp(int(std::floor(c)), 0, nels[i]);
+      const int stride = (i == 0) ? 1 : mesh.nelsx + 1;  // node k on the grid line
+      if (mpC(i) <= mesh.coord(k * stride, i)) k--;
+      first[i] = last[i] = k;
+    }
     first[i] = std::clamp(first[i], 0, nels[i] - 1);  // a domain reaching past the grid
     last[i] = std::clamp(last[i], 0, nels[i] - 1);    // edge is cut there, as in the paper
   }

@@ -5,7 +5,8 @@
 // [x_p - l_p, x_p + l_p] in every direction with positive length (a cell that
 // only touches the domain edge carries zero basis functions and is left out;
 // "touching" allows a round-off of 1e-9 h). A standard MPM point (l_p = 0)
-// belongs to the cell containing it; on a cell edge, to the cell above/right.
+// belongs to the cell X_k < x <= X_k+1 in each direction (on a cell edge: the
+// cell to the left/below), the same intervals as SvpMPM (eq 23).
 // The grid is regular, so the cells follow from the spacing without a search.
 // A domain reaching past the grid edge uses the cells inside the grid only.
 // Inputs:  mesh (nelsx, nelsy, h, origin) · mpC (2) · lp (2)

@@ -17,6 +17,11 @@ LinSolveOut linSolve(const std::vector<BC>& bc, const SpMat& Kt, const Eigen::Ve
   if (NRit == 1)
     for (const BC& c : bc) out.duvw(c.dof) = c.value;  // prescribed increments
 
+  const Eigen::VectorXd Kd = Kt * out.duvw;             // Kt(:,bc) duvw(bc)
+  if (nfd == 0) {                                       // every active dof is prescribed
+    for (const BC& c : bc) out.drct(c.dof) = Kd(c.dof) - oobf(c.dof);
+    return out;
+  }
   std::vector<int> freeIdx(nDoF, -1);                   // global dof -> row of Kt(fd,fd)
   for (int r = 0; r < nfd; ++r) freeIdx[fd[r]] = r;
   std::vector<Eigen::Triplet<double>> trip;
@@ -28,7 +33,6 @@ LinSolveOut linSolve(const std::vector<BC>& bc, const SpMat& Kt, const Eigen::Ve
   SpMat Kff(nfd, nfd);
   Kff.setFromTriplets(trip.begin(), trip.end());
 
-  const Eigen::VectorXd Kd = Kt * out.duvw;             // Kt(:,bc) duvw(bc)
   Eigen::VectorXd rhs(nfd);
   for (int r = 0; r < nfd; ++r) rhs(r) = oobf(fd[r]) - Kd(fd[r]);
 

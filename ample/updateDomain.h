@@ -14,7 +14,9 @@
 // sum_v N_v(x_c) du_v (seed 001 sec 2 (vii)), volume = area of the corners;
 // for CPDI lp is set to half the bounding box of the domain (output only).
 // Standard MPM points have no domain and are left alone.
-// Inputs:  mesh · uvw (nDoF) · method · mp (F, Fn, lp, lp0, st0, xc, nIN)
+// Called before the point moves: corners are taken at the start of the step.
+// Inputs:  mesh · uvw (nDoF) · method · mp (mpC at the start of the step, F, Fn,
+//          lp, lp0, st0, xc, nIN)
 // Outputs: mp.lp, mp.st, mp.xc (and mp.vp for CPDI2)
 // Tests:   tests/test_updateDomain.cpp
 //--------------------------------------------------------------------------

@@ -21,10 +21,10 @@ void updateMPs(const Mesh& mesh, const Eigen::VectorXd& uvw, DomainUpdate method
     Vector2d du = Vector2d::Zero();                      // eq 33
     for (int v = 0; v < mp.nn; ++v)
       for (int i = 0; i < nD; ++i) du(i) += mp.Svp[v] * uvw(dof(mp.nIN[v], i));
+    mp.vp = mp.F.determinant() * mp.vp0;                 // eq 15
+    updateDomain(mesh, uvw, method, mp);                 // eq 34 or alternatives (start-of-step corners)
     mp.mpC += du;
     mp.u += du;
-    mp.vp = mp.F.determinant() * mp.vp0;                 // eq 15
-    updateDomain(mesh, uvw, method, mp);                 // eq 34 and the alternatives
     mp.Fn = mp.F;
     mp.epsEn = mp.epsE;
   }

@@ -21,7 +21,7 @@ void prepareOutput(const std::string& outDir) {
   for (const auto& e : fs::directory_iterator(outDir)) {
     const std::string n = e.path().filename().string();
     const bool ours = n == "mesh.vtk" || n == "steps.csv" || n == "residuals.csv" ||
-                      n == "mp_final.csv" || n == "summary.json" ||
+                      n == "mp_final.csv" || n == "summary.json" || n == "history.csv" ||
                       (n.rfind("mpData_", 0) == 0 && e.path().extension() == ".vtk");
     if (ours) fs::remove(e.path(), ec);
   }
@@ -42,6 +42,19 @@ static std::string residualsCsv(const RunLog& log) {
   s.precision(17);
   s << "lstp,NRit,fErr\n";
   for (const ResidualRow& r : log.residuals) s << r.lstp << "," << r.NRit << "," << r.fErr << "\n";
+  return s.str();
+}
+
+static std::string historyCsv(const Analysis& an) {
+  std::ostringstream s;
+  s.precision(17);
+  for (size_t r = 0; r < an.history.size(); ++r) {
+    if (r == 0)
+      for (size_t c = 0; c < an.history[r].size(); ++c) s << (c ? "," : "") << an.history[r][c].first;
+    s << "\n";
+    for (size_t c = 0; c < an.history[r].size(); ++c) s << (c ? "," : "") << an.history[r][c].second;
+  }
+  s << "\n";
   return s.str();
 }
 
@@ -91,6 +104,7 @@ void writeOutput(const Setup& setup, const Params& P, const Analysis& an, const 
   atomicWrite(outDir + "/steps.csv", stepsCsv(log));
   atomicWrite(outDir + "/residuals.csv", residualsCsv(log));
   atomicWrite(outDir + "/mp_final.csv", mpFinalCsv(an));
+  if (!an.history.empty()) atomicWrite(outDir + "/history.csv", historyCsv(an));
   atomicWrite(outDir + "/summary.json", summaryJson(setup, P, an, log, res));
   if (quiet) return;
   std::printf("%s: %s after %d load steps, %d Newton-Raphson passes, %.3f s\n", setup.name,

@@ -8,6 +8,7 @@
 //   residuals.csv  lstp, NRit, fErr (every Newton-Raphson pass)
 //   mp_final.csv   X0, Y0, x, y, V0, V, sxx, syy, szz, sxy, syz, szx, lpx, lpy
 //                  (one row per point, state of the last converged step)
+//   history.csv    the setup's per-step figures, if it records any (afterStep)
 //   summary.json   setup, parameters, sizes, iterations, convergence, wall
 //                  seconds in total and per function, the setup's results
 // Inputs:  setup · P · an (final state) · log · outDir · quiet

@@ -24,4 +24,14 @@ Params params();
 Analysis setupGrid(const Params& P);
 Results results(const Analysis& an, const Params& P);
 }  // namespace collapse
+namespace shear {
+Params params();
+Analysis setupGrid(const Params& P);
+Results results(const Analysis& an, const Params& P);
+}  // namespace shear
+namespace stretch {
+Params params();
+Analysis setupGrid(const Params& P);
+Results results(const Analysis& an, const Params& P);
+}  // namespace stretch
 }  // namespace ample

@@ -20,6 +20,10 @@ const std::vector<Setup>& setupsTable() {
        beam::params, beam::setupGrid, beam::results},
       {"collapse", "von Mises block collapsing under self weight (seed 002 sec 5.3)",
        collapse::params, collapse::setupGrid, collapse::results},
+      {"shear", "simple shear of a unit square, elastic or von Mises (seed 000 sec 7.2)",
+       shear::params, shear::setupGrid, shear::results},
+      {"stretch", "plane-strain stretch of a von Mises block on a moving grid (seed 001 sec 3.1)",
+       stretch::params, stretch::setupGrid, stretch::results},
   };
   return table;
 }

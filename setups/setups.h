@@ -8,6 +8,7 @@
 //--------------------------------------------------------------------------
 #pragma once
 #include "ample/mpData.h"
+#include <functional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -37,6 +38,12 @@ struct Analysis {
   int NRitMax = 10;                   // most Newton-Raphson passes per load step
   Formulation formulation = Formulation::UL;        // frame of equilibrium (seed 000)
   DomainUpdate domainUpdate = DomainUpdate::Uii;    // GIMP domain update (seed 002 eq 34)
+  Eigen::VectorXd frct;                             // reactions of the last converged step
+  // optional work of a setup at the start / end of each load step (nullptr: none),
+  // e.g. a grid that follows the body, boundary cells that change, a reaction history
+  std::function<void(Analysis& an, int lstp)> beforeStep, afterStep;
+  std::vector<int> tagged;                          // points a setup marks for its hooks
+  std::vector<std::vector<std::pair<std::string, double>>> history;  // rows for history.csv
 };
 
 using Results = std::vector<std::pair<std::string, double>>;  // named figures of a run

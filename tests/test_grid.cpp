@@ -106,11 +106,15 @@ TEST_SUITE("elemForMP") {
     CHECK(cellsOf(m, Vector2d(3.9, 0.1), Vector2d::Zero()) == std::vector<int>{3});
     CHECK(cellsOf(m, Vector2d(1.5, 1.5), Vector2d(0.2, 0.3)) == std::vector<int>{5});
   }
-  TEST_CASE("elemForMP: an MPM point on a cell edge belongs to the cell to the right / above") {
+  TEST_CASE("elemForMP: an MPM point on a cell edge belongs to the cell to the left / below") {
+    // the intervals X_k < x <= X_k+1 of SvpMPM (eq 23), so that the cell's nodes carry
+    // the basis gradients the point actually has (a point on x = 2 moved by a shear
+    // with the wrong cell's nodes got a wrong dF)
     const Mesh m = formCoord2D(4, 4, 4.0, 4.0);
-    CHECK(cellsOf(m, Vector2d(2.0, 1.5), Vector2d::Zero()) == std::vector<int>{6});   // right
-    CHECK(cellsOf(m, Vector2d(1.5, 2.0), Vector2d::Zero()) == std::vector<int>{9});   // above
-    CHECK(cellsOf(m, Vector2d(2.0, 2.0), Vector2d::Zero()) == std::vector<int>{10});  // corner
+    CHECK(cellsOf(m, Vector2d(2.0, 1.5), Vector2d::Zero()) == std::vector<int>{5});   // left
+    CHECK(cellsOf(m, Vector2d(1.5, 2.0), Vector2d::Zero()) == std::vector<int>{5});   // below
+    CHECK(cellsOf(m, Vector2d(2.0, 2.0), Vector2d::Zero()) == std::vector<int>{5});   // corner
+    CHECK(cellsOf(m, Vector2d(0.0, 0.5), Vector2d::Zero()) == std::vector<int>{0});   // grid edge
   }
   TEST_CASE("elemForMP: a GIMP domain straddling an edge has 2 cells, a corner 4") {
     const Mesh m = formCoord2D(4, 4, 4.0, 4.0);

@@ -1,0 +1,94 @@
+//--------------------------------------------------------------------------
+// shear — simple shear of a unit square (seed 000 sec 7.2)
+//--------------------------------------------------------------------------
+// Unit square, h = 1 m / nels (0.125 m), mp x mp points per cell (3 x 3),
+// E = 10 kPa, nu = 0.3, no gravity; the top is sheared by dl = 6 m over 30
+// displacement-controlled load steps. As in the paper, the homogeneous field
+// du = (dl/lstps) Y, dv = 0 is imposed on every node of the cells linked to
+// the outer layer of points, re-found at the start of each step (beforeStep);
+// prescribe=all imposes it on every active node instead.
+// Reference: one point driven by F = [1 gamma; 0 1] through the same model
+// (homogeneous.h): elastic (cmType 1) or von Mises with rho_y = 5 kPa (2).
+//   ample shear mpType=CPDI2 cmType=VM
+// Outputs: results: error = max_p |sigma_p - sigma_ref| / |sigma_ref| at the
+//          last step; history.csv: lstp, gamma, mean and reference sigma_xy, error
+// Tests:   tests/test_setups.cpp
+//--------------------------------------------------------------------------
+#include "ample/elemMPinfo.h"
+#include "ample/formCoord2D.h"
+#include "homogeneous.h"
+#include "setupHelpers.h"
+#include "setupList.h"
+#include <cmath>
+
+namespace ample::shear {
+
+Params params() {
+  Params P = commonParams(30);
+  setDefault(P, "mp", 3);
+  setDefault(P, "E", 10e3);
+  setDefault(P, "nu", 0.3);
+  setDefault(P, "rhoY", 5e3);
+  P.push_back({"nels", 8, 1, 256, false, false, true, "cells across the unit square: h = 1 m / nels"});
+  P.push_back({"dl", 6, 0, 50, false, false, false, "shear displacement of the top (m)"});
+  P.push_back({"prescribe", 1, 1, 2, false, false, true,
+               "nodes given the shear: of the cells linked to the outer layer of points, or of all cells",
+               {"boundary", "all"}});
+  return P;
+}
+
+// Cauchy stress of one point after lstp steps of simple shear (J = 1: Cauchy = Kirchhoff)
+static Vector6d reference(const MaterialPoint& mp, int lstp, double dg) {
+  Matrix3d dF = Matrix3d::Identity();
+  dF(0, 1) = dg;
+  Vector6d epsE = Vector6d::Zero(), tau = Vector6d::Zero();
+  for (int s = 0; s < lstp; ++s) tau = homogeneousStep(dF, epsE, mp.mCst, mp.cmType);
+  return tau;
+}
+
+static double maxError(const Analysis& an, const Vector6d& ref) {
+  double err = 0.0;
+  for (const MaterialPoint& mp : an.mpData) err = std::max(err, (mp.sig - ref).norm() / ref.norm());
+  return err;
+}
+
+Analysis setupGrid(const Params& P) {
+  const int nels = int(get(P, "nels"));
+  const double dl = get(P, "dl"), dg = dl / get(P, "lstps");   // shear per step
+  const int nx = nels * (int(std::ceil(dl)) + 2);               // room for the top to move
+  Analysis an = baseAnalysis(P);
+  an.mesh = formCoord2D(nx, nels, double(nx) / nels, 1.0);
+  fillBlock(an.mpData, Vector2d::Zero(), nels, nels, an.mesh.h, P, 0.0);
+  const double edge = 1.0 / (nels * get(P, "mp"));              // the outer layer of points
+  for (int p = 0; p < int(an.mpData.size()); ++p) {
+    const Vector2d X = an.mpData[p].X0;
+    if (X.minCoeff() < edge || X.maxCoeff() > 1.0 - edge || get(P, "prescribe") == 2)
+      an.tagged.push_back(p);
+  }
+  an.beforeStep = [dg](Analysis& a, int) {                      // shear the boundary cells
+    elemMPinfo(a.mesh, a.mpData);
+    std::vector<char> fixed(a.mesh.nodes(), 0);
+    for (int p : a.tagged)
+      for (int e = 0; e < a.mpData[p].ne; ++e)
+        for (int c = 0; c < nen; ++c) fixed[a.mesh.etpl(a.mpData[p].eIN[e], c)] = 1;
+    a.mesh.bc.clear();
+    for (int n = 0; n < a.mesh.nodes(); ++n)
+      if (fixed[n]) a.mesh.bc.insert(a.mesh.bc.end(), {{dof(n, 0), dg * a.mesh.coord(n, 1)}, {dof(n, 1), 0.0}});
+  };
+  an.afterStep = [dg](Analysis& a, int lstp) {
+    const Vector6d ref = reference(a.mpData[0], lstp, dg);
+    double sxy = 0.0;
+    for (const MaterialPoint& mp : a.mpData) sxy += mp.sig(3) / a.mpData.size();
+    a.history.push_back({{"lstp", lstp}, {"gamma", dg * lstp}, {"sxy_mean", sxy},
+                         {"sxy_reference", ref(3)}, {"error", maxError(a, ref)}});
+  };
+  return an;
+}
+
+Results results(const Analysis& an, const Params&) {
+  if (an.history.empty()) return {};
+  return {{"error", an.history.back().back().second}, {"sxy", an.history.back()[2].second},
+          {"sxy_reference", an.history.back()[3].second}};
+}
+
+}  // namespace ample::shear

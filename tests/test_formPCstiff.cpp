@@ -1,0 +1,170 @@
+// Tests of formPCstiff (seed 000 appendix A.2), the consistent tangent of the
+// previously converged (PC) formulation: at the material level against central
+// differences of P~(dF) = tau dF^-T / Jn, and assembled by detMPs(..., PC)
+// against central differences of the PC internal force. PC and UL describe the
+// same equilibrium in two frames, so their internal forces (and hence their
+// tangents) agree for the same increment.
+#include "ample/detMPs.h"
+#include "ample/formPCstiff.h"
+#include "ample/tensorOps.h"
+#include "constitutive/Hooke3d.h"
+#include "constitutive/VMconst.h"
+#include "testProblems.h"
+#include <doctest/doctest.h>
+#include <cmath>
+
+using namespace ample;
+
+namespace {
+// relative difference |Kt - Kfd| / |Kt| over the columns of the linked dofs, PC formulation
+double pcTangentError(Analysis& an, const Eigen::VectorXd& uvw) {
+  const DetMPsOut base = detMPs(uvw, an.mpData, Formulation::PC);
+  const Eigen::MatrixXd Kt = Eigen::MatrixXd(base.Kt);
+  Eigen::MatrixXd Kfd = Eigen::MatrixXd::Zero(Kt.rows(), Kt.cols());
+  const double d = 1e-7;
+  for (int c = 0; c < uvw.size(); ++c) {
+    if (Kt.col(c).norm() == 0.0) continue;  // dof not linked to any point
+    Eigen::VectorXd up = uvw, um = uvw;
+    up(c) += d;
+    um(c) -= d;
+    Kfd.col(c) = (detMPs(up, an.mpData, Formulation::PC).fint -
+                  detMPs(um, an.mpData, Formulation::PC).fint) / (2 * d);
+  }
+  return (Kt - Kfd).norm() / Kt.norm();
+}
+
+// deviatoric norm of the Kirchhoff stress of every point (after a detMPs call)
+void requireAllYielding(const std::vector<MaterialPoint>& mpData) {
+  for (const MaterialPoint& mp : mpData) {
+    const Vector6d tau = mp.sig * mp.F.determinant();
+    const double p = tau.head<3>().sum() / 3.0;
+    const double rho = std::sqrt((tau.head<3>().array() - p).square().sum() +
+                                 2.0 * tau.tail<3>().squaredNorm());
+    REQUIRE(rho == doctest::Approx(mp.mCst(2)).epsilon(1e-10));
+  }
+}
+
+Analysis prestrainedBlock(MpType t, CmType c) {
+  Analysis an = testing::smallBlock(t, c);
+  testing::prestrain(an.mpData, 7);
+  for (MaterialPoint& mp : an.mpData) {
+    mp.mpC += Vector2d(0.13, -0.07);  // GIMP domains straddle cell edges
+    mp.vp = mp.Fn.determinant() * mp.vp0;  // V^n consistent with Fn
+  }
+  elemMPinfo(an.mesh, an.mpData);
+  return an;
+}
+
+// material-level PC stress P~(dF) = tau(dF) dF^-T / Jn, with the constitutive model
+struct PCState {
+  Matrix3d P, tau, BeT;
+  Matrix6d D;
+};
+PCState pcStress(const Matrix3d& dF, const Matrix3d& bEn, double Jn, CmType cm,
+                 const Vector3d& mCst) {
+  PCState s;
+  s.BeT = dF * bEn * dF.transpose();
+  const Vector6d epsTr = tensorToStrain(0.5 * symLog(s.BeT));
+  const ConstOut out = (cm == CmType::Elastic) ? Hooke3d(epsTr, mCst) : VMconst(epsTr, mCst);
+  s.D = out.D;
+  s.tau = stressToTensor(out.Ksig);
+  s.P = s.tau * dF.inverse().transpose() / Jn;
+  return s;
+}
+}  // namespace
+
+TEST_SUITE("formPCstiff") {
+  TEST_CASE("formPCstiff: A~ equals central differences of P~ = tau dF^-T / Jn (all 9 components)") {
+    const Vector3d mCst(1e6, 0.3, 2e3);
+    Matrix3d Fn;
+    Fn << 1.04, 0.03, 0, -0.02, 0.97, 0, 0, 0, 1;
+    const double Jn = Fn.determinant();
+    for (CmType cm : {CmType::Elastic, CmType::VonMises}) {
+      CAPTURE(int(cm));
+      Vector6d epsEn;  // VM: a large deviatoric elastic strain so the trial state yields
+      if (cm == CmType::Elastic) epsEn << 1e-3, -5e-4, 2e-4, 8e-4, 0, 0;
+      else epsEn << 6e-3, -4e-3, -1e-3, 5e-3, 0, 0;
+      const Matrix3d bEn = symExp(2.0 * strainToTensor(epsEn));
+      Matrix3d dF;
+      dF << 1.02, 0.015, 0.0, -0.01, 0.985, 0.0, 0.0, 0.0, 1.0;
+      const PCState s0 = pcStress(dF, bEn, Jn, cm, mCst);
+      if (cm == CmType::VonMises) {  // the base state and the stencil are plastic
+        const double p = s0.tau.trace() / 3.0;
+        const double rho = (s0.tau - p * Matrix3d::Identity()).norm();
+        REQUIRE(rho == doctest::Approx(mCst(2)).epsilon(1e-10));
+      }
+      const Matrix9d A = formPCstiff(dF, Jn, s0.D, s0.tau, bEn, s0.BeT);
+      Matrix9d Afd;
+      const double d = 1e-7;
+      for (int k = 0; k < 3; ++k)
+        for (int l = 0; l < 3; ++l) {
+          Matrix3d dFp = dF, dFm = dF;
+          dFp(k, l) += d;
+          dFm(k, l) -= d;
+          const Matrix3d dP = (pcStress(dFp, bEn, Jn, cm, mCst).P - pcStress(dFm, bEn, Jn, cm, mCst).P) / (2 * d);
+          for (int i = 0; i < 3; ++i)
+            for (int j = 0; j < 3; ++j) Afd(3 * i + j, 3 * k + l) = dP(i, j);
+        }
+      CHECK((A - Afd).norm() / A.norm() < 1e-6);
+    }
+  }
+
+  TEST_CASE("formPCstiff: detMPs(PC) tangent equals central differences of the PC internal force") {
+    for (MpType t : {MpType::MPM, MpType::GIMP})
+      for (CmType c : {CmType::Elastic, CmType::VonMises}) {
+        CAPTURE(int(t));
+        CAPTURE(int(c));
+        Analysis an = prestrainedBlock(t, c);
+        const Eigen::VectorXd uvw = testing::randomUvw(an, 0.02, 11);
+        if (c == CmType::VonMises) {  // every point must be yielding for a smooth FD
+          detMPs(uvw, an.mpData, Formulation::PC);
+          requireAllYielding(an.mpData);
+        }
+        CHECK(pcTangentError(an, uvw) < 1e-6);
+      }
+  }
+
+  TEST_CASE("formPCstiff: PC and UL internal forces are equal for the same increment") {
+    for (MpType t : {MpType::MPM, MpType::GIMP})
+      for (CmType c : {CmType::Elastic, CmType::VonMises}) {
+        CAPTURE(int(t));
+        CAPTURE(int(c));
+        Analysis an = prestrainedBlock(t, c);
+        const Eigen::VectorXd uvw = testing::randomUvw(an, 0.02, 11);
+        const Eigen::VectorXd fPC = detMPs(uvw, an.mpData, Formulation::PC).fint;
+        const Eigen::VectorXd fUL = detMPs(uvw, an.mpData, Formulation::UL).fint;
+        REQUIRE(fUL.norm() > 0.0);
+        CHECK((fPC - fUL).norm() <= 1e-12 * fUL.norm());
+      }
+  }
+
+  TEST_CASE("formPCstiff: PC and UL tangents are equal (derivatives of the same internal force)") {
+    for (MpType t : {MpType::MPM, MpType::GIMP})
+      for (CmType c : {CmType::Elastic, CmType::VonMises}) {
+        CAPTURE(int(t));
+        CAPTURE(int(c));
+        Analysis an = prestrainedBlock(t, c);
+        const Eigen::VectorXd uvw = testing::randomUvw(an, 0.02, 11);
+        const Eigen::MatrixXd KPC = Eigen::MatrixXd(detMPs(uvw, an.mpData, Formulation::PC).Kt);
+        const Eigen::MatrixXd KUL = Eigen::MatrixXd(detMPs(uvw, an.mpData, Formulation::UL).Kt);
+        CHECK((KPC - KUL).norm() <= 1e-10 * KUL.norm());
+      }
+  }
+
+  TEST_CASE("formPCstiff: zero increment from an unstressed state gives the small-strain stiffness") {
+    // dF = I, Jn = 1, b_e,n = I: A~_ijkl = D_ijkl (isotropic Hooke in tensor form)
+    const Vector3d mCst(1e6, 0.3, 2e3);
+    const Matrix6d D = elasticStiffness(mCst(0), mCst(1));
+    const Matrix3d I = Matrix3d::Identity();
+    const Matrix9d A = formPCstiff(I, 1.0, D, Matrix3d::Zero(), I, I);
+    const double lam = mCst(0) * mCst(1) / ((1 + mCst(1)) * (1 - 2 * mCst(1)));
+    const double G = mCst(0) / (2 * (1 + mCst(1)));
+    Matrix9d Aref = Matrix9d::Zero();
+    for (int i = 0; i < 3; ++i)
+      for (int j = 0; j < 3; ++j)
+        for (int k = 0; k < 3; ++k)
+          for (int l = 0; l < 3; ++l)
+            Aref(3 * i + j, 3 * k + l) = lam * (i == j) * (k == l) + G * ((i == k) * (j == l) + (i == l) * (j == k));
+    CHECK((A - Aref).norm() <= 1e-12 * Aref.norm());
+  }
+}
