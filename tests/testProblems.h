@@ -1,5 +1,6 @@
 // testProblems.h — small problems built in code for the tests (not a test file itself)
 #pragma once
+#include "ample/detMPs.h"
 #include "ample/elemMPinfo.h"
 #include "ample/formCoord2D.h"
 #include "setups/setupHelpers.h"
@@ -43,6 +44,22 @@ inline Eigen::VectorXd randomUvw(const Analysis& an, double size, unsigned seed)
     for (int v = 0; v < mp.nn; ++v)
       for (int i = 0; i < nD; ++i) uvw(dof(mp.nIN[v], i)) = size * r(gen);
   return uvw;
+}
+
+// relative difference |Kt - Kfd| / |Kt| between the assembled tangent and central
+// differences of the assembled internal force, over the columns of the linked dofs
+inline double tangentError(Analysis& an, const Eigen::VectorXd& uvw, Formulation form) {
+  const Eigen::MatrixXd Kt = Eigen::MatrixXd(detMPs(uvw, an.mpData, form).Kt);
+  Eigen::MatrixXd Kfd = Eigen::MatrixXd::Zero(Kt.rows(), Kt.cols());
+  const double d = 1e-7;
+  for (int c = 0; c < uvw.size(); ++c) {
+    if (Kt.col(c).norm() == 0.0) continue;  // dof not linked to any point
+    Eigen::VectorXd up = uvw, um = uvw;
+    up(c) += d;
+    um(c) -= d;
+    Kfd.col(c) = (detMPs(up, an.mpData, form).fint - detMPs(um, an.mpData, form).fint) / (2 * d);
+  }
+  return (Kt - Kfd).norm() / Kt.norm();
 }
 
 }  // namespace ample::testing

@@ -16,21 +16,8 @@
 using namespace ample;
 
 namespace {
-// relative difference |Kt - Kfd| / |Kt| over the columns of the linked dofs, PC formulation
 double pcTangentError(Analysis& an, const Eigen::VectorXd& uvw) {
-  const DetMPsOut base = detMPs(uvw, an.mpData, Formulation::PC);
-  const Eigen::MatrixXd Kt = Eigen::MatrixXd(base.Kt);
-  Eigen::MatrixXd Kfd = Eigen::MatrixXd::Zero(Kt.rows(), Kt.cols());
-  const double d = 1e-7;
-  for (int c = 0; c < uvw.size(); ++c) {
-    if (Kt.col(c).norm() == 0.0) continue;  // dof not linked to any point
-    Eigen::VectorXd up = uvw, um = uvw;
-    up(c) += d;
-    um(c) -= d;
-    Kfd.col(c) = (detMPs(up, an.mpData, Formulation::PC).fint -
-                  detMPs(um, an.mpData, Formulation::PC).fint) / (2 * d);
-  }
-  return (Kt - Kfd).norm() / Kt.norm();
+  return testing::tangentError(an, uvw, Formulation::PC);
 }
 
 // deviatoric norm of the Kirchhoff stress of every point (after a detMPs call)
