@@ -44,10 +44,10 @@ Eigen::VectorXd solveLoadStep(Analysis& an, int lstp, RunLog& log, bool quiet) {
       const LinSolveOut ls = linSolve(mesh.bc, Kt, oobf, NRit, fd); log.t.linSolve += sw.lap();
       uvw += ls.duvw;
       frct += ls.drct;
-      DetMPsOut mps = detMPs(uvw, an.mpData, an.formulation);                    log.t.detMPs += sw.lap();
+      DetMPsOut mps = detMPs(uvw, an.mpData, an.formulation, std::move(Kt)); log.t.detMPs += sw.lap();
       Kt = std::move(mps.Kt);
       oobf = fext - mps.fint + frct;                             // eq 31 with reactions
-      fErr = oobf.norm() / (fext + frct).array().abs().cwiseMax(DBL_EPSILON).matrix().norm(); // eq 35
+      fErr = oobf.norm() / ((fext + frct).array() + DBL_EPSILON).matrix().norm();  // eq 35 (+eps)
       log.residuals.push_back({lstp, NRit, fErr});
       if (!quiet) std::printf("  iteration %2d  NR error %10.3e\n", NRit + 1, fErr);
       NRit++;

@@ -4,6 +4,7 @@
 // Seed 002 eqs 5-18, 30-31. See detMPs.h for the steps, inputs and outputs.
 //--------------------------------------------------------------------------
 #include "detMPs.h"
+#include <algorithm>
 #include "constitutive/Hooke3d.h"
 #include "constitutive/VMconst.h"
 #include "formPCstiff.h"
@@ -11,14 +12,34 @@
 
 namespace ample {
 
+// add the point stiffness ke (rows and columns: the ascending dofs d) to Kt, whose
+// pattern already holds these entries: a merge along each column, no search tree
+static void addToPattern(SpMat& Kt, const int* d, int n, const Eigen::Ref<const Eigen::MatrixXd>& ke) {
+  const int* inner = Kt.innerIndexPtr();
+  double* val = Kt.valuePtr();
+  for (int q = 0; q < n; ++q) {
+    int pos = int(std::lower_bound(inner + Kt.outerIndexPtr()[d[q]],
+                                   inner + Kt.outerIndexPtr()[d[q] + 1], d[0]) - inner);
+    for (int p = 0; p < n; ++p) {
+      while (inner[pos] < d[p]) ++pos;
+      val[pos] += ke(p, q);
+    }
+  }
+}
+
 DetMPsOut detMPs(const Eigen::VectorXd& uvw, std::vector<MaterialPoint>& mpData,
-                 Formulation form) {
+                 Formulation form, SpMat pattern) {
   const int nDoF = int(uvw.size());
-  DetMPsOut out{Eigen::VectorXd::Zero(nDoF), SpMat(nDoF, nDoF)};
-  size_t nSMe = 0;  // number of stiffness matrix entries
-  for (const MaterialPoint& mp : mpData) nSMe += size_t(nD * mp.nn) * size_t(nD * mp.nn);
-  std::vector<Eigen::Triplet<double>> trip;
-  trip.reserve(nSMe);
+  const bool refill = pattern.rows() == nDoF && pattern.nonZeros() > 0 && pattern.isCompressed();
+  DetMPsOut out{Eigen::VectorXd::Zero(nDoF), std::move(pattern)};
+  if (refill) out.Kt.coeffs().setZero();                        // same pattern: values only
+  std::vector<Eigen::Triplet<double>> trip;                     // first pass: build the pattern
+  if (!refill) {
+    size_t nSMe = 0;  // number of stiffness matrix entries
+    for (const MaterialPoint& mp : mpData) nSMe += size_t(nD * mp.nn) * size_t(nD * mp.nn);
+    trip.reserve(nSMe);
+    out.Kt.resize(nDoF, nDoF);
+  }
 
   for (MaterialPoint& mp : mpData) {
     Matrix3d dF = Matrix3d::Identity();                           // eq 17
@@ -54,21 +75,30 @@ DetMPsOut detMPs(const Eigen::VectorXd& uvw, std::vector<MaterialPoint>& mpData,
       Sf = (tau * dF.inverse().transpose() / Jn).topLeftCorner<2, 2>();  // P~ (eq 18)
     }
 
+    int d[nD * MAXN];                                             // the point's dofs, ascending
+    for (int a = 0; a < mp.nn; ++a)
+      for (int i = 0; i < nD; ++i) d[nD * a + i] = dof(mp.nIN[a], i);
+    const int ne = nD * mp.nn;
+    Eigen::Matrix<double, nD * MAXN, nD * MAXN> ke;               // eq 14
     for (int a = 0; a < mp.nn; ++a)
       for (int i = 0; i < nD; ++i) {
         double fa = 0.0;                                          // eq 16
         for (int j = 0; j < nD; ++j) fa += dSx(j, a) * Sf(i, j);
-        out.fint(dof(mp.nIN[a], i)) += fa * Vp;
+        out.fint(d[nD * a + i]) += fa * Vp;
         for (int b = 0; b < mp.nn; ++b)
           for (int k = 0; k < nD; ++k) {
-            double kab = 0.0;                                     // eq 14
+            double kab = 0.0;
             for (int j = 0; j < nD; ++j)
               for (int l = 0; l < nD; ++l) kab += dSx(j, a) * A(3 * i + j, 3 * k + l) * dSx(l, b);
-            trip.emplace_back(dof(mp.nIN[a], i), dof(mp.nIN[b], k), kab * Vp);
+            ke(nD * a + i, nD * b + k) = kab * Vp;
           }
       }
+    if (refill) addToPattern(out.Kt, d, ne, ke.topLeftCorner(ne, ne));
+    else
+      for (int p = 0; p < ne; ++p)
+        for (int q = 0; q < ne; ++q) trip.emplace_back(d[p], d[q], ke(p, q));
   }
-  out.Kt.setFromTriplets(trip.begin(), trip.end());
+  if (!refill) out.Kt.setFromTriplets(trip.begin(), trip.end());
   return out;
 }
 

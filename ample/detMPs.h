@@ -16,7 +16,11 @@
 //   (eqs 18, 21-23, A~ from formPCstiff); both give the same equilibrium.
 // Plane strain: only the in-plane displacement gradient enters; F, b_e and
 // stress are 3D.
-// Inputs:  uvw (nDoF) displacement increment of the step · mpData · form
+// Kt is assembled from triplets; when `pattern` (the Kt of an earlier pass of
+// the same load step: the points link the same nodes) is given, only its
+// values are refilled — no allocation, no sorting.
+// Inputs:  uvw (nDoF) displacement increment of the step · mpData · form ·
+//          pattern (optional)
 // Outputs: fint (nDoF) · Kt (nDoF x nDoF) · mpData (F, sig, epsE) updated
 // Tests:   tests/test_detMPs.cpp
 //--------------------------------------------------------------------------
@@ -32,6 +36,6 @@ struct DetMPsOut {
 };
 
 DetMPsOut detMPs(const Eigen::VectorXd& uvw, std::vector<MaterialPoint>& mpData,
-                 Formulation form = Formulation::UL);
+                 Formulation form = Formulation::UL, SpMat pattern = SpMat());
 
 }  // namespace ample

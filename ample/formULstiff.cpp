@@ -21,18 +21,18 @@ double logDividedDifference(double a, double b) {
 }  // namespace
 
 Matrix9d dLogdB(const Matrix3d& b) {
-  Eigen::SelfAdjointEigenSolver<Matrix3d> es(b);
+  return dLogdB(Eigen::SelfAdjointEigenSolver<Matrix3d>(b));
+}
+
+Matrix9d dLogdB(const Eigen::SelfAdjointEigenSolver<Matrix3d>& es) {
   const Vector3d lam = es.eigenvalues();
   const Matrix3d& n = es.eigenvectors();  // column a is eigenvector n_a
   Matrix9d L = Matrix9d::Zero();
   for (int a = 0; a < 3; ++a)
-    for (int c = 0; c < 3; ++c) {
-      const double th = logDividedDifference(lam(a), lam(c));
-      for (int i = 0; i < 3; ++i)
-        for (int j = 0; j < 3; ++j)
-          for (int k = 0; k < 3; ++k)
-            for (int l = 0; l < 3; ++l)
-              L(3 * i + j, 3 * k + l) += th * n(i, a) * n(k, a) * n(l, c) * n(j, c);
+    for (int c = 0; c < 3; ++c) {         // L += theta_ac m m', m_(3i+j) = (n_a)_i (n_c)_j
+      Eigen::Matrix<double, 9, 1> m;
+      for (int i = 0; i < 3; ++i) m.segment<3>(3 * i) = n(i, a) * n.col(c);
+      L.noalias() += logDividedDifference(lam(a), lam(c)) * m * m.transpose();
     }
   return L;
 }
@@ -49,7 +49,7 @@ Matrix9d formULstiff(const Matrix3d& F, const Matrix6d& D, const Vector6d& sig,
           if (j == k) S9(3 * i + j, 3 * k + l) = sig(voigt[i][l]);  // sigma_il delta_jk
         }
   const double J = F.determinant();
-  return (0.5 / J) * D9 * dLogdB(BeT) * B9 - S9;
+  return (0.5 / J) * (D9.lazyProduct(dLogdB(BeT))).lazyProduct(B9) - S9;
 }
 
 }  // namespace ample

@@ -13,12 +13,14 @@
 //--------------------------------------------------------------------------
 #pragma once
 #include "mpData.h"
+#include <Eigen/Eigenvalues>
 
 namespace ample {
 
 using Matrix9d = Eigen::Matrix<double, 9, 9>;
 
 Matrix9d dLogdB(const Matrix3d& b);  // L_ijkl = d ln(b)_ij / d b_kl
+Matrix9d dLogdB(const Eigen::SelfAdjointEigenSolver<Matrix3d>& eig);  // from b's eigen-decomposition
 Matrix9d formULstiff(const Matrix3d& F, const Matrix6d& D, const Vector6d& sig,
                      const Matrix3d& BeT);
 
