@@ -56,12 +56,12 @@ DetMPsOut detMPs(const Eigen::VectorXd& uvw, std::vector<MaterialPoint>& mpData,
     mp.epsE = cm.epsE;
     mp.sig = cm.Ksig / mp.F.determinant();                        // eq 6
 
-    Matrix9d A;                                                   // tangent
+    Eigen::Matrix4d A;                                            // in-plane tangent, (i,j) -> 2i+j
     Eigen::Matrix2d Sf;                                           // stress paired with dSx
     Eigen::Matrix<double, nD, MAXN> dSx;                          // basis gradients
     double Vp;                                                    // volume
     if (form == Formulation::UL) {                                // seed 002 eqs 14-18
-      A = formULstiff(mp.F, cm.D, mp.sig, BeT);                   // seed 000 eq A.1
+      A = formULstiff2D(mp.F, cm.D, mp.sig, BeT);                 // seed 000 eq A.1
       const Eigen::Matrix2d iF = dF.topLeftCorner<2, 2>().inverse();
       dSx.leftCols(mp.nn) = iF.transpose() * mp.dSvp.leftCols(mp.nn);  // eq 18: dS/dx
       Vp = dF.determinant() * mp.vp;                              // eq 15
@@ -69,7 +69,9 @@ DetMPsOut detMPs(const Eigen::VectorXd& uvw, std::vector<MaterialPoint>& mpData,
     } else {                                                      // seed 000 eqs 18-23
       const double Jn = mp.Fn.determinant();
       const Matrix3d tau = stressToTensor(cm.Ksig);
-      A = formPCstiff(dF, Jn, cm.D, tau, bEn, BeT);               // seed 000 eq A.3
+      const Matrix9d A9 = formPCstiff(dF, Jn, cm.D, tau, bEn, BeT);  // seed 000 eq A.3
+      for (int p = 0; p < 4; ++p)                                 // its in-plane block
+        for (int q = 0; q < 4; ++q) A(p, q) = A9(3 * (p / 2) + p % 2, 3 * (q / 2) + q % 2);
       dSx.leftCols(mp.nn) = mp.dSvp.leftCols(mp.nn);              // dS/dX~, no mapping
       Vp = mp.vp;                                                 // V_p^n (eq 22)
       Sf = (tau * dF.inverse().transpose() / Jn).topLeftCorner<2, 2>();  // P~ (eq 18)
@@ -89,7 +91,7 @@ DetMPsOut detMPs(const Eigen::VectorXd& uvw, std::vector<MaterialPoint>& mpData,
           for (int k = 0; k < nD; ++k) {
             double kab = 0.0;
             for (int j = 0; j < nD; ++j)
-              for (int l = 0; l < nD; ++l) kab += dSx(j, a) * A(3 * i + j, 3 * k + l) * dSx(l, b);
+              for (int l = 0; l < nD; ++l) kab += dSx(j, a) * A(2 * i + j, 2 * k + l) * dSx(l, b);
             ke(nD * a + i, nD * b + k) = kab * Vp;
           }
       }

@@ -37,16 +37,31 @@ Vector6d tensorToStress(const Matrix3d& t) {
   return s;
 }
 
-Matrix3d symExp(const Matrix3d& A) {
+// f(A) = V f(lambda) V' for a symmetric A. Plane strain keeps A block diagonal
+// (A_xz = A_yz = 0): then the in-plane 2x2 block is decomposed in closed form and
+// the zz entry is mapped directly, which gives the same tensor at a third of the cost.
+template <class Fn>
+static Matrix3d symFunction(const Matrix3d& A, Fn f) {
+  if (A(0, 2) == 0.0 && A(1, 2) == 0.0 && A(2, 0) == 0.0 && A(2, 1) == 0.0) {
+    Eigen::SelfAdjointEigenSolver<Eigen::Matrix2d> es;
+    es.computeDirect(A.topLeftCorner<2, 2>());
+    const Eigen::Vector2d d = es.eigenvalues().unaryExpr(f);
+    Matrix3d R = Matrix3d::Zero();
+    R.topLeftCorner<2, 2>() = es.eigenvectors() * d.asDiagonal() * es.eigenvectors().transpose();
+    R(2, 2) = f(A(2, 2));
+    return R;
+  }
   Eigen::SelfAdjointEigenSolver<Matrix3d> es(A);
-  const Vector3d d = es.eigenvalues().array().exp();
+  const Vector3d d = es.eigenvalues().unaryExpr(f);
   return es.eigenvectors() * d.asDiagonal() * es.eigenvectors().transpose();
 }
 
+Matrix3d symExp(const Matrix3d& A) {
+  return symFunction(A, [](double x) { return std::exp(x); });
+}
+
 Matrix3d symLog(const Matrix3d& A) {
-  Eigen::SelfAdjointEigenSolver<Matrix3d> es(A);
-  const Vector3d d = es.eigenvalues().array().log();
-  return es.eigenvectors() * d.asDiagonal() * es.eigenvectors().transpose();
+  return symFunction(A, [](double x) { return std::log(x); });
 }
 
 }  // namespace ample

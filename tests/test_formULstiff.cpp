@@ -108,3 +108,25 @@ TEST_SUITE("formULstiff") {
     CHECK((AJ * 1.08 - A1).norm() <= 1e-12 * A1.norm());
   }
 }
+
+TEST_SUITE("formULstiff") {
+  TEST_CASE("formULstiff2D: equals the in-plane block of formULstiff in plane strain") {
+    Matrix3d F, BeT;  // block diagonal, as plane strain keeps them
+    F << 1.2, 0.3, 0, -0.1, 0.9, 0, 0, 0, 1;
+    BeT << 1.4, 0.25, 0, 0.25, 0.8, 0, 0, 0, 1.1;
+    Vector6d sig;
+    sig << 3e3, -2e3, 5e2, 1.5e3, 0, 0;
+    for (const Matrix6d& D : {elasticStiffness(1e6, 0.3), Matrix6d(elasticStiffness(2e5, 0.1) * 0.7)}) {
+      const Matrix9d A9 = formULstiff(F, D, sig, BeT);
+      const Eigen::Matrix4d A4 = formULstiff2D(F, D, sig, BeT);
+      for (int p = 0; p < 4; ++p)
+        for (int q = 0; q < 4; ++q)
+          CHECK(std::abs(A4(p, q) - A9(3 * (p / 2) + p % 2, 3 * (q / 2) + q % 2)) <= 1e-10 * A9.norm());
+    }
+    const Matrix3d iso = Matrix3d::Identity() * 1.3;  // repeated in-plane eigenvalues
+    const Eigen::Matrix4d A4 = formULstiff2D(F, elasticStiffness(1e6, 0.3), sig, iso);
+    const Matrix9d A9 = formULstiff(F, elasticStiffness(1e6, 0.3), sig, iso);
+    CHECK(std::abs(A4(0, 0) - A9(0, 0)) <= 1e-10 * A9.norm());
+    CHECK(std::abs(A4(1, 2) - A9(1, 3)) <= 1e-10 * A9.norm());
+  }
+}
