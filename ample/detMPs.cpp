@@ -69,9 +69,7 @@ DetMPsOut detMPs(const Eigen::VectorXd& uvw, std::vector<MaterialPoint>& mpData,
     } else {                                                      // seed 000 eqs 18-23
       const double Jn = mp.Fn.determinant();
       const Matrix3d tau = stressToTensor(cm.Ksig);
-      const Matrix9d A9 = formPCstiff(dF, Jn, cm.D, tau, bEn, BeT);  // seed 000 eq A.3
-      for (int p = 0; p < 4; ++p)                                 // its in-plane block
-        for (int q = 0; q < 4; ++q) A(p, q) = A9(3 * (p / 2) + p % 2, 3 * (q / 2) + q % 2);
+      A = formPCstiff2D(dF, Jn, cm.D, tau, bEn, BeT);             // seed 000 eq A.3
       dSx.leftCols(mp.nn) = mp.dSvp.leftCols(mp.nn);              // dS/dX~, no mapping
       Vp = mp.vp;                                                 // V_p^n (eq 22)
       Sf = (tau * dF.inverse().transpose() / Jn).topLeftCorner<2, 2>();  // P~ (eq 18)

@@ -33,4 +33,26 @@ Matrix9d formPCstiff(const Matrix3d& dF, double Jn, const Matrix6d& D, const Mat
   return A;
 }
 
+Matrix4d formPCstiff2D(const Matrix3d& dF, double Jn, const Matrix6d& D, const Matrix3d& tau,
+                       const Matrix3d& bEn, const Matrix3d& BeT) {
+  const Matrix3d bFt = bEn * dF.transpose(), Fb = dF * bEn, iF = dF.inverse();
+  Matrix4d Bt;
+  for (int p = 0; p < 4; ++p)
+    for (int q = 0; q < 4; ++q) {
+      const int r = p / 2, s = p % 2, k = q / 2, l = q % 2;
+      Bt(p, q) = (r == k ? bFt(l, s) : 0.0) + (s == k ? Fb(r, l) : 0.0);            // A.5
+    }
+  const Matrix4d T = 0.5 * elasticBlock2D(D) * dLogdB2D(BeT) * Bt;                   // A.4
+  Matrix4d A;
+  for (int p = 0; p < 4; ++p)
+    for (int q = 0; q < 4; ++q) {
+      const int i = p / 2, j = p % 2, k = q / 2, l = q % 2;
+      double a = 0.0;
+      for (int m = 0; m < 2; ++m)
+        a += T(2 * i + m, q) * iF(j, m) - tau(i, m) * iF(j, k) * iF(l, m);          // A.3, A.6
+      A(p, q) = a / Jn;
+    }
+  return A;
+}
+
 }  // namespace ample

@@ -21,4 +21,9 @@ namespace ample {
 Matrix9d formPCstiff(const Matrix3d& dF, double Jn, const Matrix6d& D, const Matrix3d& tau,
                      const Matrix3d& bEn, const Matrix3d& BeT);
 
+// plane strain: the in-plane block from 4x4 blocks, pairs (i,j) -> 2*i + j
+// (as formULstiff2D; exact because dF, b_e and tau are block diagonal)
+Matrix4d formPCstiff2D(const Matrix3d& dF, double Jn, const Matrix6d& D, const Matrix3d& tau,
+                       const Matrix3d& bEn, const Matrix3d& BeT);
+
 }  // namespace ample

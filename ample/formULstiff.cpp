@@ -52,25 +52,37 @@ Matrix9d formULstiff(const Matrix3d& F, const Matrix6d& D, const Vector6d& sig,
   return (0.5 / J) * (D9.lazyProduct(dLogdB(BeT))).lazyProduct(B9) - S9;
 }
 
-Matrix4d formULstiff2D(const Matrix3d& F, const Matrix6d& D, const Vector6d& sig,
-                       const Matrix3d& BeT) {
+Matrix4d dLogdB2D(const Matrix3d& b) {
   Eigen::SelfAdjointEigenSolver<Eigen::Matrix2d> es;
-  es.computeDirect(BeT.topLeftCorner<2, 2>());
+  es.computeDirect(b.topLeftCorner<2, 2>());
   const Eigen::Vector2d lam = es.eigenvalues();
   const Eigen::Matrix2d& n = es.eigenvectors();
-  Matrix4d L = Matrix4d::Zero();                  // in-plane block of d ln(b)/db
+  Matrix4d L = Matrix4d::Zero();
   for (int a = 0; a < 2; ++a)
     for (int c = 0; c < 2; ++c) {
       Eigen::Vector4d m;
       m << n(0, a) * n.col(c), n(1, a) * n.col(c);
       L.noalias() += logDividedDifference(lam(a), lam(c)) * m * m.transpose();
     }
-  Matrix4d D4, B4, S4 = Matrix4d::Zero();
+  return L;
+}
+
+Matrix4d elasticBlock2D(const Matrix6d& D) {
+  Matrix4d D4;
+  for (int p = 0; p < 4; ++p)
+    for (int q = 0; q < 4; ++q) D4(p, q) = D(voigt[p / 2][p % 2], voigt[q / 2][q % 2]);
+  return D4;
+}
+
+Matrix4d formULstiff2D(const Matrix3d& F, const Matrix6d& D, const Vector6d& sig,
+                       const Matrix3d& BeT) {
+  const Matrix4d L = dLogdB2D(BeT);               // in-plane block of d ln(b)/db
+  const Matrix4d D4 = elasticBlock2D(D);
+  Matrix4d B4, S4 = Matrix4d::Zero();
   for (int i = 0; i < 2; ++i)
     for (int j = 0; j < 2; ++j)
       for (int k = 0; k < 2; ++k)
         for (int l = 0; l < 2; ++l) {
-          D4(2 * i + j, 2 * k + l) = D(voigt[i][j], voigt[k][l]);
           B4(2 * i + j, 2 * k + l) = (i == k ? BeT(j, l) : 0.0) + (j == k ? BeT(i, l) : 0.0);
           if (j == k) S4(2 * i + j, 2 * k + l) = sig(voigt[i][l]);
         }

@@ -31,5 +31,7 @@ Matrix9d formULstiff(const Matrix3d& F, const Matrix6d& D, const Vector6d& sig,
 using Matrix4d = Eigen::Matrix4d;
 Matrix4d formULstiff2D(const Matrix3d& F, const Matrix6d& D, const Vector6d& sig,
                        const Matrix3d& BeT);
+Matrix4d dLogdB2D(const Matrix3d& b);      // in-plane block of dLogdB (b block diagonal)
+Matrix4d elasticBlock2D(const Matrix6d& D);  // in-plane block of D as a pair tensor
 
 }  // namespace ample

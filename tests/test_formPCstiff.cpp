@@ -155,3 +155,20 @@ TEST_SUITE("formPCstiff") {
     CHECK((A - Aref).norm() <= 1e-12 * Aref.norm());
   }
 }
+
+TEST_SUITE("formPCstiff") {
+  TEST_CASE("formPCstiff2D: equals the in-plane block of formPCstiff in plane strain") {
+    Matrix3d dF, bEn;
+    dF << 1.1, 0.2, 0, -0.15, 0.95, 0, 0, 0, 1;
+    bEn << 1.2, -0.1, 0, -0.1, 0.9, 0, 0, 0, 1.05;
+    const Matrix3d BeT = dF * bEn * dF.transpose();
+    Matrix3d tau;
+    tau << 2e3, 5e2, 0, 5e2, -1e3, 0, 0, 0, 3e2;
+    const Matrix6d D = elasticStiffness(1e6, 0.3);
+    const Matrix9d A9 = formPCstiff(dF, 1.3, D, tau, bEn, BeT);
+    const Eigen::Matrix4d A4 = formPCstiff2D(dF, 1.3, D, tau, bEn, BeT);
+    for (int p = 0; p < 4; ++p)
+      for (int q = 0; q < 4; ++q)
+        CHECK(std::abs(A4(p, q) - A9(3 * (p / 2) + p % 2, 3 * (q / 2) + q % 2)) <= 1e-10 * A9.norm());
+  }
+}
