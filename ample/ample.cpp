@@ -38,10 +38,12 @@ Eigen::VectorXd solveLoadStep(Analysis& an, int lstp, RunLog& log, bool quiet) {
   const std::vector<int> fd = detFDoFs(mesh);                    log.t.detFDoFs += sw.lap();
   double fErr = 1.0;
   int NRit = 0;
-  SpMat Kt(nDoF, nDoF);
+  SpMat Kt = stiffnessPattern(nDoF, an.mpData);                  // sparsity of this step
+  FreeSystem Kff;                                                // Kt(fd,fd) and its analysis
+  log.t.detMPs += sw.lap();
   try {
     while ((fErr > an.tol && NRit < an.NRitMax) || NRit < 2) {
-      const LinSolveOut ls = linSolve(mesh.bc, Kt, oobf, NRit, fd); log.t.linSolve += sw.lap();
+      const LinSolveOut ls = linSolve(mesh.bc, Kt, oobf, NRit, fd, &Kff); log.t.linSolve += sw.lap();
       uvw += ls.duvw;
       frct += ls.drct;
       DetMPsOut mps = detMPs(uvw, an.mpData, an.formulation, std::move(Kt)); log.t.detMPs += sw.lap();

@@ -27,19 +27,39 @@ static void addToPattern(SpMat& Kt, const int* d, int n, const Eigen::Ref<const 
   }
 }
 
+SpMat stiffnessPattern(int nDoF, const std::vector<MaterialPoint>& mpData) {
+  const int nodes = nDoF / nD;
+  std::vector<int> start(nodes + 1, 0);  // rows of each node column, with repeats, bucketed
+  for (const MaterialPoint& mp : mpData)
+    for (int b = 0; b < mp.nn; ++b) start[mp.nIN[b] + 1] += mp.nn;
+  for (int n = 0; n < nodes; ++n) start[n + 1] += start[n];
+  std::vector<int> rows(start[nodes]), fill(start.begin(), start.end() - 1);
+  for (const MaterialPoint& mp : mpData)
+    for (int b = 0; b < mp.nn; ++b)
+      for (int a = 0; a < mp.nn; ++a) rows[fill[mp.nIN[b]]++] = mp.nIN[a];
+  Eigen::VectorXi perColumn = Eigen::VectorXi::Zero(nDoF);
+  for (int n = 0; n < nodes; ++n) {      // each column's distinct row nodes, ascending
+    auto first = rows.begin() + start[n], last = rows.begin() + start[n + 1];
+    std::sort(first, last);
+    fill[n] = int(std::unique(first, last) - rows.begin());   // end of the distinct rows
+    for (int k = 0; k < nD; ++k) perColumn(dof(n, k)) = nD * int(fill[n] - start[n]);
+  }
+  SpMat K(nDoF, nDoF);
+  K.reserve(perColumn);
+  for (int n = 0; n < nodes; ++n)
+    for (int k = 0; k < nD; ++k)
+      for (int e = start[n]; e < fill[n]; ++e)
+        for (int i = 0; i < nD; ++i) K.insert(dof(rows[e], i), dof(n, k)) = 0.0;
+  K.makeCompressed();
+  return K;
+}
+
 DetMPsOut detMPs(const Eigen::VectorXd& uvw, std::vector<MaterialPoint>& mpData,
                  Formulation form, SpMat pattern) {
   const int nDoF = int(uvw.size());
-  const bool refill = pattern.rows() == nDoF && pattern.nonZeros() > 0 && pattern.isCompressed();
+  if (pattern.rows() != nDoF || pattern.nonZeros() == 0) pattern = stiffnessPattern(nDoF, mpData);
   DetMPsOut out{Eigen::VectorXd::Zero(nDoF), std::move(pattern)};
-  if (refill) out.Kt.coeffs().setZero();                        // same pattern: values only
-  std::vector<Eigen::Triplet<double>> trip;                     // first pass: build the pattern
-  if (!refill) {
-    size_t nSMe = 0;  // number of stiffness matrix entries
-    for (const MaterialPoint& mp : mpData) nSMe += size_t(nD * mp.nn) * size_t(nD * mp.nn);
-    trip.reserve(nSMe);
-    out.Kt.resize(nDoF, nDoF);
-  }
+  out.Kt.coeffs().setZero();                                    // the pattern's values only
 
   for (MaterialPoint& mp : mpData) {
     Matrix3d dF = Matrix3d::Identity();                           // eq 17
@@ -93,12 +113,8 @@ DetMPsOut detMPs(const Eigen::VectorXd& uvw, std::vector<MaterialPoint>& mpData,
             ke(nD * a + i, nD * b + k) = kab * Vp;
           }
       }
-    if (refill) addToPattern(out.Kt, d, ne, ke.topLeftCorner(ne, ne));
-    else
-      for (int p = 0; p < ne; ++p)
-        for (int q = 0; q < ne; ++q) trip.emplace_back(d[p], d[q], ke(p, q));
+    addToPattern(out.Kt, d, ne, ke.topLeftCorner(ne, ne));      // eq 30
   }
-  if (!refill) out.Kt.setFromTriplets(trip.begin(), trip.end());
   return out;
 }
 

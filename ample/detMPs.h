@@ -16,11 +16,11 @@
 //   (eqs 18, 21-23, A~ from formPCstiff); both give the same equilibrium.
 // Plane strain: only the in-plane displacement gradient enters; F, b_e and
 // stress are 3D.
-// Kt is assembled from triplets; when `pattern` (the Kt of an earlier pass of
-// the same load step: the points link the same nodes) is given, only its
-// values are refilled — no allocation, no sorting.
+// Kt is assembled into `pattern`, the sparsity of the load step (the points
+// link the same nodes in every iteration): stiffnessPattern builds it once per
+// step, each pass only refills its values. An empty pattern is built here.
 // Inputs:  uvw (nDoF) displacement increment of the step · mpData · form ·
-//          pattern (optional)
+//          pattern (optional: the Kt of an earlier pass of the same step)
 // Outputs: fint (nDoF) · Kt (nDoF x nDoF) · mpData (F, sig, epsE) updated
 // Tests:   tests/test_detMPs.cpp
 //--------------------------------------------------------------------------
@@ -35,6 +35,7 @@ struct DetMPsOut {
   SpMat Kt;              // global tangent stiffness
 };
 
+SpMat stiffnessPattern(int nDoF, const std::vector<MaterialPoint>& mpData);  // zero-valued Kt
 DetMPsOut detMPs(const Eigen::VectorXd& uvw, std::vector<MaterialPoint>& mpData,
                  Formulation form = Formulation::UL, SpMat pattern = SpMat());
 

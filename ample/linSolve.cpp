@@ -9,8 +9,27 @@
 
 namespace ample {
 
+void buildFreeSystem(const SpMat& Kt, const std::vector<int>& fd, FreeSystem& S) {
+  const int nfd = int(fd.size());
+  std::vector<int> freeIdx(Kt.rows(), -1);              // global dof -> row of Kt(fd,fd)
+  for (int r = 0; r < nfd; ++r) freeIdx[fd[r]] = r;
+  std::vector<Eigen::Triplet<double>> trip;             // value = position of the entry in Kt
+  for (int c = 0; c < Kt.outerSize(); ++c)
+    if (freeIdx[c] >= 0)
+      for (int e = Kt.outerIndexPtr()[c]; e < Kt.outerIndexPtr()[c + 1]; ++e)
+        if (freeIdx[Kt.innerIndexPtr()[e]] >= 0)
+          trip.emplace_back(freeIdx[Kt.innerIndexPtr()[e]], freeIdx[c], double(e));
+  S.Kff = SpMat(nfd, nfd);
+  S.Kff.setFromTriplets(trip.begin(), trip.end());      // no duplicates: each value is one e
+  S.fromKt.resize(S.Kff.nonZeros());
+  for (int e = 0; e < S.Kff.nonZeros(); ++e) S.fromKt[e] = int(S.Kff.valuePtr()[e]);
+  S.solver.analyzePattern(S.Kff);                       // symbolic analysis, once per pattern
+  S.fd = fd;
+  S.ktNonZeros = Kt.nonZeros();
+}
+
 LinSolveOut linSolve(const std::vector<BC>& bc, const SpMat& Kt, const Eigen::VectorXd& oobf,
-                     int NRit, const std::vector<int>& fd) {
+                     int NRit, const std::vector<int>& fd, FreeSystem* cache) {
   const int nDoF = int(oobf.size()), nfd = int(fd.size());
   LinSolveOut out{Eigen::VectorXd::Zero(nDoF), Eigen::VectorXd::Zero(nDoF)};
   if (NRit == 0) return out;  // first pass only builds Kt and fint
@@ -22,27 +41,20 @@ LinSolveOut linSolve(const std::vector<BC>& bc, const SpMat& Kt, const Eigen::Ve
     for (const BC& c : bc) out.drct(c.dof) = Kd(c.dof) - oobf(c.dof);
     return out;
   }
-  std::vector<int> freeIdx(nDoF, -1);                   // global dof -> row of Kt(fd,fd)
-  for (int r = 0; r < nfd; ++r) freeIdx[fd[r]] = r;
-  std::vector<Eigen::Triplet<double>> trip;
-  trip.reserve(Kt.nonZeros());
-  for (int c = 0; c < Kt.outerSize(); ++c)
-    if (freeIdx[c] >= 0)
-      for (SpMat::InnerIterator it(Kt, c); it; ++it)
-        if (freeIdx[it.row()] >= 0) trip.emplace_back(freeIdx[it.row()], freeIdx[c], it.value());
-  SpMat Kff(nfd, nfd);
-  Kff.setFromTriplets(trip.begin(), trip.end());
+  FreeSystem local;                                     // no cache given: build it here
+  FreeSystem& S = cache ? *cache : local;
+  if (S.fd != fd || S.ktNonZeros != Kt.nonZeros()) buildFreeSystem(Kt, fd, S);
+  for (int e = 0; e < S.Kff.nonZeros(); ++e) S.Kff.valuePtr()[e] = Kt.valuePtr()[S.fromKt[e]];
 
   Eigen::VectorXd rhs(nfd);
   for (int r = 0; r < nfd; ++r) rhs(r) = oobf(fd[r]) - Kd(fd[r]);
 
-  Eigen::SparseLU<SpMat, Eigen::COLAMDOrdering<int>> solver;
-  solver.compute(Kff);
-  if (solver.info() != Eigen::Success)
+  S.solver.factorize(S.Kff);                            // numeric factorisation only
+  if (S.solver.info() != Eigen::Success)
     throw RunError("SparseLU could not factorise the stiffness Kt(fd,fd) (" +
-                   solver.lastErrorMessage() + "): the problem is singular, e.g. a rigid-body "
+                   S.solver.lastErrorMessage() + "): the problem is singular, e.g. a rigid-body "
                    "mode without enough boundary conditions or a nearly empty cell");
-  const Eigen::VectorXd x = solver.solve(rhs);
+  const Eigen::VectorXd x = S.solver.solve(rhs);
   for (int r = 0; r < nfd; ++r) out.duvw(fd[r]) = x(r);
 
   const Eigen::VectorXd Ku = Kt * out.duvw;
