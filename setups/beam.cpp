@@ -8,7 +8,8 @@
 // free end either side of the neutral axis, over 50 load steps. Rollers on
 // x = 0 (x fixed), the root pinned at mid-depth (x and y fixed at (0, 9.5)).
 //   ample beam a=2 mp=3
-// Outputs: Analysis · results: tip displacement (mean of the two loaded points)
+// Outputs: Analysis · results: tip displacement (mean of the two loaded points);
+//          history.csv: load factor and tip displacement over l at every step
 // Tests:   tests/test_ample.cpp (setups run), tests/test_detMPs.cpp
 //--------------------------------------------------------------------------
 #include "ample/formCoord2D.h"
@@ -50,6 +51,11 @@ Analysis setupGrid(const Params& P) {
     if (x(1) < yNA && (below < 0 || x(1) > an.mpData[below].mpC(1))) below = p;
   }
   an.mpData[above].fp = an.mpData[below].fp = Vector2d(0, -get(P, "P") / 2);
+  an.afterStep = [above, below, lstps = an.lstps](Analysis& a, int lstp) {  // tip history
+    const Vector2d u = 0.5 * (a.mpData[above].u + a.mpData[below].u);
+    a.history.push_back({{"lstp", lstp}, {"load_factor", double(lstp) / lstps},
+                         {"tip_u_over_l", u(0) / l}, {"tip_v_over_l", u(1) / l}});
+  };
   return an;
 }
 
