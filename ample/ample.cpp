@@ -6,8 +6,10 @@
 //   lstp/lstps) -> detFDoFs -> Newton-Raphson loop { linSolve -> detMPs ->
 //   oobf = fext - fint + frct, fErr = |oobf| / |fext + frct| (eq 35) } while
 //   (fErr > tol and NRit < NRitMax) or NRit < 2 -> updateMPs -> postPro.
-// A step that ends with fErr > tol stops the run (exit 1): the state of the
-// last converged step is kept and written, the failure is named on stderr.
+// A step that ends with fErr > tol (or a NaN, or a singular stiffness) stops the
+// run (exit 1): the state of the last converged step is kept and written, the
+// failure is named on stderr — unless substeps > 0: then the step is retried
+// in halves, up to substeps times (a remedy; the default 0 is the paper's way).
 // See ample.h for inputs and outputs.
 //--------------------------------------------------------------------------
 #include "ample.h"
@@ -27,13 +29,28 @@
 
 namespace ample {
 
-Eigen::VectorXd solveLoadStep(Analysis& an, int lstp, RunLog& log, bool quiet) {
+// the message for a residual that is NaN or Inf: where it first shows
+static std::string notFinite(const std::vector<MaterialPoint>& mpData, int lstp, int NRit) {
+  std::string where = "no material point has a non-finite stress: look at the nodal forces";
+  for (size_t p = 0; p < mpData.size(); ++p)
+    if (!mpData[p].sig.allFinite() || !mpData[p].F.allFinite()) {
+      where = "first at material point " + std::to_string(p) + " (x = " +
+              std::to_string(mpData[p].mpC(0)) + ", y = " + std::to_string(mpData[p].mpC(1)) + ")";
+      break;
+    }
+  return "load step " + std::to_string(lstp) + ", Newton-Raphson pass " + std::to_string(NRit) +
+         ": the residual is not finite (NaN or Inf), " + where;
+}
+
+Eigen::VectorXd solveLoadStep(Analysis& an, int lstp, double lf, double bcScale, RunLog& log,
+                              bool quiet) {
   Mesh& mesh = an.mesh;
   const int nDoF = mesh.nDoF();
   Stopwatch sw;
   elemMPinfo(mesh, an.mpData);                                   log.t.elemMPinfo += sw.lap();
-  const Eigen::VectorXd fext =
-      detExtForce(nDoF, an.g, an.mpData) * (double(lstp) / an.lstps); log.t.detExtForce += sw.lap();
+  const Eigen::VectorXd fext = detExtForce(nDoF, an.g, an.mpData) * lf; log.t.detExtForce += sw.lap();
+  std::vector<BC> bc = mesh.bc;                                  // prescribed increments of
+  for (BC& c : bc) c.value *= bcScale;                           // this (part of a) step
   Eigen::VectorXd oobf = fext, frct = Eigen::VectorXd::Zero(nDoF), uvw = frct;
   const std::vector<int> fd = detFDoFs(mesh);                    log.t.detFDoFs += sw.lap();
   double fErr = 1.0;
@@ -43,7 +60,7 @@ Eigen::VectorXd solveLoadStep(Analysis& an, int lstp, RunLog& log, bool quiet) {
   log.t.detMPs += sw.lap();
   try {
     while ((fErr > an.tol && NRit < an.NRitMax) || NRit < 2) {
-      const LinSolveOut ls = linSolve(mesh.bc, Kt, oobf, NRit, fd, &Kff); log.t.linSolve += sw.lap();
+      const LinSolveOut ls = linSolve(bc, Kt, oobf, NRit, fd, &Kff); log.t.linSolve += sw.lap();
       uvw += ls.duvw;
       frct += ls.drct;
       DetMPsOut mps = detMPs(uvw, an.mpData, an.formulation, std::move(Kt)); log.t.detMPs += sw.lap();
@@ -52,31 +69,48 @@ Eigen::VectorXd solveLoadStep(Analysis& an, int lstp, RunLog& log, bool quiet) {
       fErr = oobf.norm() / ((fext + frct).array() + DBL_EPSILON).matrix().norm();  // eq 35 (+eps)
       log.residuals.push_back({lstp, NRit, fErr});
       if (!quiet) std::printf("  iteration %2d  NR error %10.3e\n", NRit + 1, fErr);
+      if (!std::isfinite(fErr)) throw NewtonFailure(notFinite(an.mpData, lstp, NRit));
       NRit++;
-      if (!std::isfinite(fErr)) break;
     }
-  } catch (const RunError&) {                                    // e.g. a singular stiffness
+  } catch (const RunError& e) {                                  // e.g. a singular stiffness
     log.totalNRit += NRit;
-    log.steps.push_back({lstp, double(lstp) / an.lstps, NRit, fErr, false, 0.0});
-    throw;
+    log.steps.push_back({lstp, lf, NRit, fErr, false, 0.0});
+    throw NewtonFailure(e.what());
   }
   log.totalNRit += NRit;
-  log.steps.push_back({lstp, double(lstp) / an.lstps, NRit, fErr, fErr <= an.tol, 0.0});
+  log.steps.push_back({lstp, lf, NRit, fErr, fErr <= an.tol, 0.0});
   an.frct = frct;
   if (!(fErr <= an.tol)) {
     char msg[200];
     std::snprintf(msg, sizeof msg, "load step %d did not converge: fErr = %.3e > tol = %.1e "
                   "after %d Newton-Raphson passes (NRitMax = %d)", lstp, fErr, an.tol, NRit, an.NRitMax);
-    throw RunError(msg);
+    throw NewtonFailure(msg);
   }
   return uvw;
 }
 
-void loadStep(Analysis& an, int lstp, RunLog& log, bool quiet) {
-  if (an.beforeStep) an.beforeStep(an, lstp);
-  const Eigen::VectorXd uvw = solveLoadStep(an, lstp, log, quiet);
+// load factors lf0 -> lf1 of load step lstp; when Newton fails and sub-division is
+// allowed (an.substeps > depth), restore the converged state and take two halves
+static void advance(Analysis& an, int lstp, double lf0, double lf1, int depth, RunLog& log,
+                    bool quiet) {
+  Eigen::VectorXd uvw;
+  try {
+    uvw = solveLoadStep(an, lstp, lf1, (lf1 - lf0) * an.lstps, log, quiet);
+  } catch (const NewtonFailure& e) {
+    if (depth >= an.substeps) throw;
+    restoreConverged(an.mpData);
+    if (!quiet) std::printf("  %s: retrying with half the increment\n", e.what());
+    advance(an, lstp, lf0, 0.5 * (lf0 + lf1), depth + 1, log, quiet);
+    advance(an, lstp, 0.5 * (lf0 + lf1), lf1, depth + 1, log, quiet);
+    return;
+  }
   Stopwatch sw;
   updateMPs(an.mesh, uvw, an.domainUpdate, an.mpData);           log.t.updateMPs += sw.lap();
+}
+
+void loadStep(Analysis& an, int lstp, RunLog& log, bool quiet) {
+  if (an.beforeStep) an.beforeStep(an, lstp);
+  advance(an, lstp, double(lstp - 1) / an.lstps, double(lstp) / an.lstps, 0, log, quiet);
   if (an.afterStep) an.afterStep(an, lstp);
 }
 

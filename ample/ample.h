@@ -25,9 +25,11 @@ struct RunOptions {
 
 int ample(const Setup& setup, const Params& P, const RunOptions& opt);
 
-// the Newton-Raphson loop of one load step (seed 002 fig 5, lines 21-30);
-// returns uvw, the converged displacement increment of the step
-Eigen::VectorXd solveLoadStep(Analysis& an, int lstp, RunLog& log, bool quiet);
+// the Newton-Raphson loop of one load step (seed 002 fig 5, lines 21-30) to the
+// load factor lf, with the prescribed increments scaled by bcScale (1 for a whole
+// step); returns uvw, the converged displacement increment; throws NewtonFailure
+Eigen::VectorXd solveLoadStep(Analysis& an, int lstp, double lf, double bcScale, RunLog& log,
+                              bool quiet);
 
 // one load step: the setup's beforeStep, solveLoadStep, updateMPs, the setup's afterStep
 void loadStep(Analysis& an, int lstp, RunLog& log, bool quiet);

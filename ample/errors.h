@@ -19,5 +19,10 @@ struct InputError : std::runtime_error {
 struct RunError : std::runtime_error {
   using std::runtime_error::runtime_error;
 };
+// the Newton-Raphson loop of a load step failed (no convergence, NaN, singular
+// stiffness): the one failure that a smaller load step may cure
+struct NewtonFailure : RunError {
+  using RunError::RunError;
+};
 
 }  // namespace ample

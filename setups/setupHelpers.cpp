@@ -14,6 +14,7 @@ Analysis baseAnalysis(const Params& P) {
   an.lstps = int(get(P, "lstps"));
   an.tol = get(P, "tol");
   an.NRitMax = int(get(P, "NRitMax"));
+  an.substeps = int(get(P, "substeps"));
   an.formulation = Formulation(int(get(P, "formulation")));
   an.domainUpdate = DomainUpdate(int(get(P, "domainUpdate")));
   return an;

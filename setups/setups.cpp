@@ -60,6 +60,8 @@ Params commonParams(int lstps) {
       {"lstps", double(lstps), 1, 1e6, false, false, true, "number of equal load steps"},
       {"tol", 1e-9, 0, 1, true, true, false, "Newton-Raphson tolerance on fErr (eq 35)"},
       {"NRitMax", 10, 2, 1000, false, false, true, "most Newton-Raphson passes per load step"},
+      {"substeps", 0, 0, 30, false, false, true,
+       "remedy: halvings of a load step allowed when Newton fails (0 = the paper's algorithm)"},
       {"mpType", 2, 1, 4, false, false, true, "material point type", {"MPM", "GIMP", "CPDI1", "CPDI2"}},
       {"mp", 2, 1, 20, false, false, true, "material points per cell in each direction"},
       {"cmType", 1, 1, 2, false, false, true, "constitutive model", {"elastic", "VM"}},

@@ -36,6 +36,7 @@ struct Analysis {
   double g = 0;                       // gravitational acceleration (m/s2), acting in -y
   double tol = 1e-9;                  // Newton-Raphson tolerance on fErr (eq 35)
   int NRitMax = 10;                   // most Newton-Raphson passes per load step
+  int substeps = 0;                   // halvings of a failed load step allowed (0: none)
   Formulation formulation = Formulation::UL;        // frame of equilibrium (seed 000)
   DomainUpdate domainUpdate = DomainUpdate::Uii;    // GIMP domain update (seed 002 eq 34)
   Eigen::VectorXd frct;                             // reactions of the last converged step

@@ -1,0 +1,57 @@
+// Tests of the failure paths of the main loop (issue 6): a NaN names the load step, the
+// pass and the first bad point; a failed load step can be rescued by sub-division.
+#include "ample/ample.h"
+#include "ample/errors.h"
+#include "testProblems.h"
+#include <doctest/doctest.h>
+#include <cmath>
+
+using namespace ample;
+
+TEST_SUITE("robustness") {
+  TEST_CASE("robustness: a NaN stops the step with the load step, pass and first bad point") {
+    Analysis an = testing::smallBlock(MpType::GIMP, CmType::Elastic, 2);
+    an.g = 10.0;
+    an.lstps = 4;
+    for (int n = 0; n < an.mesh.nodes(); ++n) an.mesh.bc.push_back({dof(n, 1), 0.0});  // no rigid mode
+    for (int n = 0; n < an.mesh.nodes(); ++n) an.mesh.bc.push_back({dof(n, 0), 0.0});
+    an.mesh.bc.resize(an.mesh.bc.size() - 2 * 5);  // free a few x dofs of the block
+    an.mpData[3].mCst(0) = NAN;                    // Young's modulus of point 3
+    RunLog log;
+    try {
+      loadStep(an, 1, log, true);
+      FAIL("no exception");
+    } catch (const NewtonFailure& e) {
+      const std::string m = e.what();
+      CHECK(m.find("load step 1") != std::string::npos);
+      CHECK(m.find("material point 3") != std::string::npos);
+      CHECK(m.find("not finite") != std::string::npos);
+    }
+    REQUIRE(!log.steps.empty());
+    CHECK(!log.steps.back().converged);
+  }
+
+  TEST_CASE("robustness: sub-division rescues a compaction taken in one load step") {
+    const Setup* s = findSetup("compaction");
+    Params P = s->params();
+    setDefault(P, "nelsy", 8);
+    setDefault(P, "lstps", 1);
+    RunLog log0;
+    Analysis plain = s->setupGrid(P);
+    CHECK_THROWS_AS(loadStep(plain, 1, log0, true), NewtonFailure);  // the paper's algorithm
+    setDefault(P, "substeps", 8);
+    Analysis an = s->setupGrid(P);
+    RunLog log;
+    loadStep(an, 1, log, true);
+    CHECK(log.steps.back().converged);
+    CHECK(log.steps.back().loadFactor == 1.0);
+    CHECK(log.steps.size() > 2);                                     // every attempt recorded
+    setDefault(P, "substeps", 0);
+    setDefault(P, "lstps", 40);
+    Analysis fine = s->setupGrid(P);
+    RunLog logF;
+    for (int l = 1; l <= 40; ++l) loadStep(fine, l, logF, true);
+    const double e1 = s->results(an, P)[0].second, e40 = s->results(fine, P)[0].second;
+    CHECK(std::abs(e1 - e40) <= 0.5 * e40);  // same analytic solution, stepped differently
+  }
+}
