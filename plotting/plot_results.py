@@ -175,7 +175,7 @@ for c, steps, pub in ((0, (10, 20, 30, 40), "seed 000 table 8 (collapse, GIMP h 
     for x in csv.DictReader(open(path)):
         res.setdefault(int(x["lstp"]), []).append(float(x["fErr"]))
     tables.append("\n## Newton-Raphson residuals, compare %s\n" % pub)
-    tables.append("| NR it | " + " | ".join("step %d" % s for s in steps) + " |\n|---" * (len(steps) + 1) + "|\n")
+    tables.append("| NR it | " + " | ".join("step %d" % s for s in steps) + " |\n|" + "---|" * (len(steps) + 1) + "\n")
     for k in range(max(len(res.get(s, [])) for s in steps)):
         tables.append("| %d | " % k + " | ".join("%.3e" % res[s][k] if k < len(res.get(s, [])) else "-" for s in steps) + " |\n")
     orders = []
@@ -190,7 +190,7 @@ TIMES = ["elemMPinfo", "detExtForce", "detFDoFs", "detMPs", "linSolve", "updateM
 split = [r for r in scal if r["setup"] == "compaction" and param(r, "nelsy") == "4096"] + beam[:1]
 if split:
     tables.append("\n## Where the time goes (compare seed 000 table 5)\n")
-    tables.append("| run | " + " | ".join(TIMES) + " | other |\n|---" * (len(TIMES) + 2) + "|\n")
+    tables.append("| run | " + " | ".join(TIMES) + " | other |\n|" + "---|" * (len(TIMES) + 2) + "\n")
     for r in split:
         w = num(r, "wall_s")
         parts = [num(r, "t_" + t) / w for t in TIMES]
@@ -203,7 +203,9 @@ if met:
     tables.append("| run | converged | extent / height or error | published | NR its | wall s | detMPs s |\n|---|---|---|---|---|---|---|\n")
     for r in met:
         key = param(r, "domainUpdate") or param(r, "mpType")
-        val = ("%.3f / %.3f" % (num(r, "extent"), num(r, "height"))) if r["setup"] != "compaction" else "%.3e" % num(r, "error")
+        val = {"compaction": "%.3e" % num(r, "error"),
+               "beam": "tip u/l %.5f, v/l %.5f" % (num(r, "tip_u_over_l"), num(r, "tip_v_over_l"))}.get(
+                   r["setup"], "%.3f / %.3f" % (num(r, "extent"), num(r, "height")))
         pub = PUB7.get(key) if r["setup"] == "collapse" else None
         tables.append("| %s %s | %s | %s | %s | %s | %.2f | %.2f |\n" % (
             r["setup"], r["parameters"], "yes" if r["converged"] == "1" else "no (step %s)" % r["last_step"], val,

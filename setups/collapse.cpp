@@ -26,6 +26,8 @@ Params params() {
   setDefault(P, "nu", 0.3);
   setDefault(P, "rhoY", 20e3);
   P.push_back({"a", 2, 1, 64, false, false, true, "grid refinement: h = 2 m / a"});
+  P.push_back({"width", 16, 8, 1000, true, false, false,
+               "grid width (m), rounded up to whole cells; below ~14 m the toe leaves the grid"});
   P.push_back({"rho", 1000, 0, INFINITY, false, true, false, "density (kg/m3)"});
   P.push_back({"g", 10, 0, INFINITY, false, true, false, "gravitational acceleration (m/s2)"});
   return P;
@@ -35,7 +37,8 @@ Analysis setupGrid(const Params& P) {
   const int a = int(get(P, "a"));
   Analysis an = baseAnalysis(P);
   an.g = get(P, "g");
-  an.mesh = formCoord2D(8 * a, 4 * a, 16, 8);
+  const int nelsx = int(std::ceil(get(P, "width") * a / 2.0 - 1e-9));  // h = 2 m / a
+  an.mesh = formCoord2D(nelsx, 4 * a, nelsx * 2.0 / a, 8);
   const double eps = 1e-9 * an.mesh.h(0);
   fixDofs(an.mesh, 0, [&](double X, double) { return X < eps; });  // left edge
   fixDofs(an.mesh, 1, [&](double, double Y) { return Y < eps; });  // base

@@ -4,6 +4,7 @@
 #include "ample/errors.h"
 #include <doctest/doctest.h>
 #include <cstdlib>
+#include <random>
 #include <filesystem>
 #include <sys/wait.h>
 
@@ -72,5 +73,36 @@ TEST_SUITE("cli") {
     const std::string dir = std::string(AMPLE_TEST_TMP) + "/cli_run";
     CHECK(runBinary("compaction nelsy=4 lstps=2 E=1e6 --vtk 0 --quiet --out " + dir) == 0);
     CHECK(runBinary("collapse lstps=2 NRitMax=2 --vtk 0 --quiet --out " + dir) == 1);
+  }
+}
+
+TEST_SUITE("cli") {
+  TEST_CASE("cli: random and malformed arguments never crash the parser (seeded fuzz)") {
+    std::mt19937 gen(20261123);
+    const std::vector<std::string> words = {
+        "compaction", "beam", "collapse", "shear", "stretch", "--out", "--vtk", "--quiet", "--help",
+        "--list", "-h", "nelsy=", "nelsy=8", "E=1e300", "E=-0", "nu=0.49999", "mp=0", "mpType=GIMP",
+        "mpType=gimp", "=", "==", "a=b=c", "lstps=1e9", "tol=1e-400", "0", "-1", "1e", "nan", "",
+        "domainUpdate=corner", "formulation=PC", "substeps=31", "dl=50", "x"};
+    std::uniform_int_distribution<int> pick(0, int(words.size()) - 1), len(0, 7), byte(1, 255);
+    int parsed = 0, refused = 0;
+    for (int trial = 0; trial < 20000; ++trial) {
+      std::vector<std::string> args;
+      for (int k = len(gen); k > 0; --k) {
+        std::string w = words[pick(gen)];
+        if (gen() % 5 == 0) w += char(byte(gen));   // a random byte appended
+        if (gen() % 7 == 0 && !w.empty()) w[gen() % w.size()] = char(byte(gen));
+        args.push_back(w);
+      }
+      try {
+        parseArgs(args);
+        ++parsed;
+      } catch (const InputError&) {
+        ++refused;  // the only exception allowed
+      }
+    }
+    CHECK(parsed + refused == 20000);
+    CHECK(parsed > 0);
+    CHECK(refused > 0);
   }
 }

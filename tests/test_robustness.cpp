@@ -55,3 +55,21 @@ TEST_SUITE("robustness") {
     CHECK(std::abs(e1 - e40) <= 0.5 * e40);  // same analytic solution, stepped differently
   }
 }
+
+TEST_SUITE("robustness") {
+  TEST_CASE("robustness: a point leaving the grid stops the run naming it, its position, the grid") {
+    const Setup* s = findSetup("collapse");
+    Params P = s->params();
+    setDefault(P, "width", 10);  // the toe reaches about 13.8 m
+    Analysis an = s->setupGrid(P);
+    RunLog log;
+    try {
+      for (int l = 1; l <= an.lstps; ++l) loadStep(an, l, log, true);
+      FAIL("the toe never left the grid");
+    } catch (const RunError& e) {
+      const std::string m = e.what();
+      CHECK(m.find("point ") != std::string::npos);
+      CHECK(m.find("has left the background grid [0, 10] x [0, 8]") != std::string::npos);
+    }
+  }
+}

@@ -158,7 +158,7 @@ std::vector<Suite> suites(bool quick) {
   if (quick) nr.cases.pop_back();
   all.push_back(nr);
 
-  Suite met{"methods", {}, {"extent", "height", "error"}};
+  Suite met{"methods", {}, {"extent", "height", "error", "tip_u_over_l", "tip_v_over_l"}};
   for (const char* f : {"UL", "PC"}) {
     met.cases.push_back(A({"collapse", "mp=6", std::string("formulation=") + f}));
     met.cases.push_back(A({"beam", std::string("formulation=") + f}));
