@@ -19,6 +19,7 @@
 #include "detMPs.h"
 #include "elemMPinfo.h"
 #include "errors.h"
+#include "ghostPenalty.h"
 #include "linSolve.h"
 #include "plotting/postPro.h"
 #include "plotting/writeOutput.h"
@@ -28,6 +29,12 @@
 #include <iostream>
 
 namespace ample {
+
+static double largestE(const std::vector<MaterialPoint>& mpData) {
+  double E = 0.0;
+  for (const MaterialPoint& mp : mpData) E = std::max(E, mp.mCst(0));
+  return E;
+}
 
 // the message for a residual that is NaN or Inf: where it first shows
 static std::string notFinite(const std::vector<MaterialPoint>& mpData, int lstp, int NRit) {
@@ -57,14 +64,18 @@ Eigen::VectorXd solveLoadStep(Analysis& an, int lstp, double lf, double bcScale,
   int NRit = 0;
   SpMat Kt = stiffnessPattern(nDoF, an.mpData);                  // sparsity of this step
   FreeSystem Kff;                                                // Kt(fd,fd) and its analysis
+  SpMat Kgp, Ksys;                                               // remedy: ghost penalty (off:
+  if (an.ghost > 0) Kgp = ghostPenalty(mesh, an.ghost, largestE(an.mpData));  // empty)
   log.t.detMPs += sw.lap();
   try {
     while ((fErr > an.tol && NRit < an.NRitMax) || NRit < 2) {
-      const LinSolveOut ls = linSolve(bc, Kt, oobf, NRit, fd, &Kff); log.t.linSolve += sw.lap();
+      const SpMat& K = (an.ghost > 0 && NRit > 0) ? (Ksys = Kt + Kgp) : Kt;
+      const LinSolveOut ls = linSolve(bc, K, oobf, NRit, fd, &Kff); log.t.linSolve += sw.lap();
       uvw += ls.duvw;
       frct += ls.drct;
       DetMPsOut mps = detMPs(uvw, an.mpData, an.formulation, std::move(Kt)); log.t.detMPs += sw.lap();
       Kt = std::move(mps.Kt);
+      if (an.ghost > 0) mps.fint += Kgp * uvw;                   // penalty on the increment
       oobf = fext - mps.fint + frct;                             // eq 31 with reactions
       fErr = oobf.norm() / ((fext + frct).array() + DBL_EPSILON).matrix().norm();  // eq 35 (+eps)
       log.residuals.push_back({lstp, NRit, fErr});

@@ -15,6 +15,7 @@ Analysis baseAnalysis(const Params& P) {
   an.tol = get(P, "tol");
   an.NRitMax = int(get(P, "NRitMax"));
   an.substeps = int(get(P, "substeps"));
+  an.ghost = get(P, "ghost");
   an.formulation = Formulation(int(get(P, "formulation")));
   an.domainUpdate = DomainUpdate(int(get(P, "domainUpdate")));
   return an;

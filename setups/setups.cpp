@@ -62,6 +62,8 @@ Params commonParams(int lstps) {
       {"NRitMax", 10, 2, 1000, false, false, true, "most Newton-Raphson passes per load step"},
       {"substeps", 0, 0, 30, false, false, true,
        "remedy: halvings of a load step allowed when Newton fails (0 = the paper's algorithm)"},
+      {"ghost", 0, 0, 1e3, false, false, false,
+       "remedy: ghost-penalty factor gamma on the faces of the edge cells (0 = off, the paper's)"},
       {"mpType", 2, 1, 4, false, false, true, "material point type", {"MPM", "GIMP", "CPDI1", "CPDI2"}},
       {"mp", 2, 1, 20, false, false, true, "material points per cell in each direction"},
       {"cmType", 1, 1, 2, false, false, true, "constitutive model", {"elastic", "VM"}},

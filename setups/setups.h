@@ -37,6 +37,7 @@ struct Analysis {
   double tol = 1e-9;                  // Newton-Raphson tolerance on fErr (eq 35)
   int NRitMax = 10;                   // most Newton-Raphson passes per load step
   int substeps = 0;                   // halvings of a failed load step allowed (0: none)
+  double ghost = 0;                   // ghost-penalty factor of the edge cells (0: none)
   Formulation formulation = Formulation::UL;        // frame of equilibrium (seed 000)
   DomainUpdate domainUpdate = DomainUpdate::Uii;    // GIMP domain update (seed 002 eq 34)
   Eigen::VectorXd frct;                             // reactions of the last converged step

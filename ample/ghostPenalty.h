@@ -1,0 +1,27 @@
+//--------------------------------------------------------------------------
+// ghostPenalty — ghost stabilisation of the cells at the edge of the body
+//--------------------------------------------------------------------------
+// A remedy for nearly empty cells (issue 6), after Burman's ghost penalty
+// (E. Burman, C. R. Acad. Sci. Paris 348, 2010) as used for the implicit MPM by
+// W.M. Coombs, "Ghost stabilisation of the material point method for stable
+// quasi-static and dynamic analysis of large deformation problems", IJNME
+// 124 (2023). For every face F shared by two active cells of which at least
+// one is an edge cell (it has an inactive neighbour or lies on the grid edge):
+//   K_gp = sum_F gamma E h int_F [[du/dn]] . [[dv/dn]] ds,
+// the jump of the normal derivative of the bi-linear grid interpolation across
+// F (2-point Gauss along F), E the largest Young's modulus of the points. The
+// penalty acts on the displacement increment of the step: fint += K_gp uvw.
+// Off (gamma = 0) by default, so the paper's algorithm is unchanged.
+// Inputs:  mesh (etpl, eInA, nelsx, nelsy, h, coord) · gamma · E
+// Outputs: K_gp (nDoF x nDoF), empty when no face qualifies
+// Tests:   tests/test_robustness.cpp
+//--------------------------------------------------------------------------
+#pragma once
+#include "linSolve.h"
+#include "mpData.h"
+
+namespace ample {
+
+SpMat ghostPenalty(const Mesh& mesh, double gamma, double E);
+
+}  // namespace ample
