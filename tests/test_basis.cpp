@@ -66,7 +66,7 @@ Invariants invariants(const Mesh& mesh, const MaterialPoint& mp) {
 }  // namespace
 
 TEST_SUITE("SvpMPM") {
-  TEST_CASE("SvpMPM: partition of unity, zero gradient sum, linear reproduction") {
+  TEST_CASE("SvpMPM: partition of unity / zero gradient sum / linear reproduction") {
     for (double x = 0.013; x < 4.0; x += 0.0371) {
       CAPTURE(x);
       const Sums s = sum1D(x, false);
@@ -87,7 +87,7 @@ TEST_SUITE("SvpMPM") {
 }
 
 TEST_SUITE("SvpGIMP") {
-  TEST_CASE("SvpGIMP: partition of unity, zero gradient sum, linear reproduction for lp <= h/2") {
+  TEST_CASE("SvpGIMP: partition of unity / zero gradient sum / linear reproduction for lp <= h/2") {
     for (double l : {lp, 0.01, h / 2}) {  // h/2: the widest domain allowed (regions B, D vanish)
       for (double x = 0.013; x < 4.0; x += 0.0371) {
         CAPTURE(l);
@@ -140,7 +140,7 @@ TEST_SUITE("SvpGIMP") {
 }
 
 TEST_SUITE("MPMbasis") {
-  TEST_CASE("MPMbasis: 2D partition of unity, zero gradient sum, sum dS (x) X = I, MPM and GIMP") {
+  TEST_CASE("MPMbasis: 2D partition of unity / zero gradient sum / sum dS (x) X = I / MPM and GIMP") {
     const Mesh mesh = formCoord2D(3, 3, 3.0, 3.0);  // 16 nodes, h = 1
     const Vector2d l(0.2, 0.3);                      // GIMP domain half lengths
     for (MpType t : {MpType::MPM, MpType::GIMP}) {
@@ -159,7 +159,7 @@ TEST_SUITE("MPMbasis") {
       }
     }
   }
-  TEST_CASE("MPMbasis: S(X,Y) = S(X) S(Y) and gradients are its partial derivatives") {
+  TEST_CASE("MPMbasis: S(X Y) = S(X) S(Y) and gradients are its partial derivatives") {
     const Mesh mesh = formCoord2D(3, 3, 3.0, 3.0);
     MaterialPoint mp = pointOnAllNodes(mesh, MpType::GIMP, Vector2d(1.93, 2.08), Vector2d(0.2, 0.15));
     MPMbasis(mesh, mp);
@@ -187,7 +187,7 @@ TEST_SUITE("MPMbasis") {
 }
 
 TEST_SUITE("elemMPinfo") {
-  TEST_CASE("elemMPinfo: linked nodes carry a complete linear basis, active cells marked") {
+  TEST_CASE("elemMPinfo: linked nodes carry a complete linear basis / active cells marked") {
     for (MpType t : {MpType::MPM, MpType::GIMP}) {
       Mesh mesh = formCoord2D(4, 4, 4.0, 4.0);
       std::vector<MaterialPoint> pts(3);

@@ -53,7 +53,7 @@ TEST_SUITE("Hooke3d") {
       CHECK(o.Ksig.norm() == doctest::Approx(G * 2e-3).epsilon(1e-14));  // nothing else
     }
   }
-  TEST_CASE("Hooke3d: volumetric strain gives p = 3K e; D symmetric") {
+  TEST_CASE("Hooke3d: volumetric strain gives p = 3K e / D symmetric") {
     const ConstOut o = Hooke3d(1e-3 * m1(), mCst);
     CHECK(meanOf(o.Ksig) == doctest::Approx(3 * K * 1e-3).epsilon(1e-13));
     CHECK(rhoOf(o.Ksig) <= 1e-12 * std::abs(meanOf(o.Ksig)));
@@ -81,7 +81,7 @@ TEST_SUITE("VMconst") {
     const Vector6d sT = devOf(e.Ksig), s = devOf(o.Ksig);  // same deviatoric direction
     CHECK((s / s.norm() - sT / sT.norm()).norm() <= 1e-13);
   }
-  TEST_CASE("VMconst: the returned elastic strain gives the returned stress, D epsE = tau") {
+  TEST_CASE("VMconst: the returned elastic strain gives the returned stress / D epsE = tau") {
     const ConstOut o = VMconst(plasticStrain(), mCst);
     CHECK((elasticStiffness(E, nu) * o.epsE - o.Ksig).norm() <= 1e-10 * o.Ksig.norm());
   }

@@ -129,7 +129,7 @@ TEST_SUITE("SvpCPDI2") {
     CHECK(s.dS.norm() <= 1e-13);
   }
 
-  TEST_CASE("SvpCPDI2: linear reproduction (centroid of the bilinear quad, sum X (x) dS = I)") {
+  TEST_CASE("SvpCPDI2: linear reproduction (centroid of the bilinear quad / sum X (x) dS = I)") {
     const Mesh mesh = grid();
     const Corners x = distortedQuad();
     const Sums s = sumOverNodes(mesh, [&](int n) { return SvpCPDI2(cornerValues(mesh, n, x), x); });
@@ -175,7 +175,7 @@ TEST_SUITE("SvpCPDI2") {
     }
   }
 
-  TEST_CASE("SvpCPDI2: translating a parallelogram inside one cell, FD of S equals the gradient") {
+  TEST_CASE("SvpCPDI2: translating a parallelogram inside one cell / FD of S equals the gradient") {
     // inside one cell the grid basis is bilinear; for a parallelogram the
     // bilinear interpolant of the corner values equals the hat function itself,
     // so d S / d(translation) is the average gradient
@@ -203,7 +203,7 @@ TEST_SUITE("SvpCPDI2") {
     }
   }
 
-  TEST_CASE("SvpCPDI2: translating a distorted quad inside one cell, FD of S = gradient + analytic edge term") {
+  TEST_CASE("SvpCPDI2: translating a distorted quad inside one cell / FD of S = gradient + analytic edge term") {
     // For a non-parallelogram the bilinear interpolant S^ of the corner values
     // differs from the hat function N = a + bx + cy + dxy along the edges, so the
     // translation derivative sum_c w_c grad N(x_c) = grad N(centroid) differs

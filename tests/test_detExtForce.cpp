@@ -54,7 +54,7 @@ TEST_SUITE("detExtForce") {
     for (int n : {0, 1, 4, 5, 6, 9}) rest += f.segment<2>(2 * n).norm();
     CHECK(rest == 0.0);
   }
-  TEST_CASE("detExtForce: without gravity only the point forces remain; g scales the weight") {
+  TEST_CASE("detExtForce: without gravity only the point forces remain / g scales the weight") {
     const MaterialPoint p = point({0, 1}, {0.3, 0.7}, 5.0, Vector2d(0, 0));
     CHECK(detExtForce(4, 0.0, {p}).norm() == 0.0);
     const Eigen::VectorXd f1 = detExtForce(4, 1.0, {p}), f2 = detExtForce(4, 2.0, {p});

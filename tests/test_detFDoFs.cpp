@@ -15,7 +15,7 @@ TEST_SUITE("detFDoFs") {
     for (int d = 0; d < 12; ++d) all[d] = d;
     CHECK(detFDoFs(mesh) == all);
   }
-  TEST_CASE("detFDoFs: only nodes of active cells, minus the bc dofs, ascending") {
+  TEST_CASE("detFDoFs: only nodes of active cells / minus the bc dofs / ascending") {
     Mesh mesh = formCoord2D(4, 4, 4.0, 4.0);  // 5 nodes per row
     mesh.eInA.assign(mesh.nels(), 0);
     mesh.eInA[5] = mesh.eInA[6] = 1;           // nodes 6 7 8 11 12 13
@@ -25,7 +25,7 @@ TEST_SUITE("detFDoFs") {
                                        dof(12, 0), /* 12y held */ dof(13, 0), dof(13, 1)};
     CHECK(detFDoFs(mesh) == expected);
   }
-  TEST_CASE("detFDoFs: separate active regions, shared nodes counted once") {
+  TEST_CASE("detFDoFs: separate active regions / shared nodes counted once") {
     Mesh mesh = formCoord2D(4, 4, 4.0, 4.0);
     mesh.eInA.assign(mesh.nels(), 0);
     mesh.eInA[0] = mesh.eInA[5] = mesh.eInA[15] = 1;  // cells 0 and 5 share node 6

@@ -12,7 +12,7 @@ using namespace ample;
 
 
 TEST_SUITE("detMPs") {
-  TEST_CASE("detMPs: tangent equals central differences of fint (elastic, plastic; MPM, GIMP)") {
+  TEST_CASE("detMPs: tangent equals central differences of fint (elastic / plastic / MPM / GIMP)") {
     for (MpType t : {MpType::MPM, MpType::GIMP})
       for (CmType c : {CmType::Elastic, CmType::VonMises}) {
         CAPTURE(int(t));

@@ -62,7 +62,7 @@ Matrix3d gradU() {  // a small displacement gradient, not symmetric
 }  // namespace
 
 TEST_SUITE("formULstiff") {
-  TEST_CASE("dLogdB: equals central differences of symLog, distinct eigenvalues") {
+  TEST_CASE("dLogdB: equals central differences of symLog / distinct eigenvalues") {
     Matrix3d b;
     b << 1.3, 0.2, 0.0, 0.2, 0.9, 0.0, 0.0, 0.0, 1.0;
     CHECK(dLogError(b) < 1e-6);

@@ -29,7 +29,7 @@ std::vector<int> nodesOf(const Mesh& mesh, std::vector<int> cells) {
 }  // namespace
 
 TEST_SUITE("formCoord2D") {
-  TEST_CASE("formCoord2D: node count, coordinates row by row, spacing") {
+  TEST_CASE("formCoord2D: node count / coordinates row by row / spacing") {
     const Mesh m = formCoord2D(3, 2, 6.0, 2.0);
     REQUIRE(m.nodes() == 12);
     REQUIRE(m.nels() == 6);
@@ -44,7 +44,7 @@ TEST_SUITE("formCoord2D") {
         CHECK(std::abs(m.coord(4 * j + i, 1) - 1.0 * j) <= 1e-14);
       }
   }
-  TEST_CASE("formCoord2D: cells anticlockwise from the lower-left node, positive area h_x h_y") {
+  TEST_CASE("formCoord2D: cells anticlockwise from the lower-left node / positive area h_x h_y") {
     const Mesh m = formCoord2D(3, 2, 6.0, 2.0);
     for (int e = 0; e < m.nels(); ++e) {
       CAPTURE(e);
@@ -62,7 +62,7 @@ TEST_SUITE("formCoord2D") {
 }
 
 TEST_SUITE("detMpPos") {
-  TEST_CASE("detMpPos: mp x mp points, symmetric, spacing 2/mp inside [-1, 1]") {
+  TEST_CASE("detMpPos: mp x mp points / symmetric / spacing 2/mp inside [-1 / 1]") {
     for (int mp = 1; mp <= 6; ++mp) {
       CAPTURE(mp);
       const Eigen::MatrixX2d p = detMpPos(mp);
@@ -116,7 +116,7 @@ TEST_SUITE("elemForMP") {
     CHECK(cellsOf(m, Vector2d(2.0, 2.0), Vector2d::Zero()) == std::vector<int>{5});   // corner
     CHECK(cellsOf(m, Vector2d(0.0, 0.5), Vector2d::Zero()) == std::vector<int>{0});   // grid edge
   }
-  TEST_CASE("elemForMP: a GIMP domain straddling an edge has 2 cells, a corner 4") {
+  TEST_CASE("elemForMP: a GIMP domain straddling an edge has 2 cells / a corner 4") {
     const Mesh m = formCoord2D(4, 4, 4.0, 4.0);
     CHECK(cellsOf(m, Vector2d(2.05, 1.5), Vector2d(0.1, 0.1)) == std::vector<int>{5, 6});
     CHECK(cellsOf(m, Vector2d(1.5, 1.95), Vector2d(0.1, 0.1)) == std::vector<int>{5, 9});
@@ -145,7 +145,7 @@ TEST_SUITE("elemForMP") {
 }
 
 TEST_SUITE("nodesForMP") {
-  TEST_CASE("nodesForMP: unique ascending nodes of 1, 2 and 4 cells") {
+  TEST_CASE("nodesForMP: unique ascending nodes of 1 / 2 and 4 cells") {
     const Mesh m = formCoord2D(4, 4, 4.0, 4.0);  // 5 nodes per row
     CHECK(nodesOf(m, {5}) == std::vector<int>{6, 7, 11, 12});
     CHECK(nodesOf(m, {5, 6}) == std::vector<int>{6, 7, 8, 11, 12, 13});

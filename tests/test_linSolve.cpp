@@ -34,7 +34,7 @@ TEST_SUITE("linSolve") {
     CHECK(o.duvw.norm() == 0.0);
     CHECK(o.drct.norm() == 0.0);
   }
-  TEST_CASE("linSolve: at NRit = 1 the prescribed increment enters, Kff x = rhs, reactions") {
+  TEST_CASE("linSolve: at NRit = 1 the prescribed increment enters / Kff x = rhs / reactions") {
     const SpMat K = chain();
     Eigen::VectorXd oobf(5);
     oobf << 0.7, 0.5, -1.0, 0.25, 2.0;  // out-of-balance force
@@ -65,7 +65,7 @@ TEST_SUITE("linSolve") {
     CHECK(o.drct(0) == doctest::Approx(-2.0).epsilon(1e-13));
     CHECK(linSolve({{0, 0.1}}, K, Eigen::VectorXd::Zero(5), 2, {1, 2, 3, 4}).duvw.norm() == 0.0);
   }
-  TEST_CASE("linSolve: a prescribed dof inside the chain; dofs not in fd stay zero") {
+  TEST_CASE("linSolve: a prescribed dof inside the chain / dofs not in fd stay zero") {
     const SpMat K = chain();
     Eigen::VectorXd oobf = Eigen::VectorXd::Zero(5);
     oobf(4) = 1.0;  // dof 4 is inactive (not in fd, no bc): its force is ignored
@@ -82,7 +82,7 @@ TEST_SUITE("linSolve") {
     CHECK(o.duvw(3) == doctest::Approx(-0.2 * 3.0 / 7.0).epsilon(1e-13));
     CHECK(std::abs(o.drct(2) - r(2)) <= 1e-13);
   }
-  TEST_CASE("linSolve: a singular Kff (rigid-body mode, no constraint) throws RunError") {
+  TEST_CASE("linSolve: a singular Kff (rigid-body mode / no constraint) throws RunError") {
     CHECK_THROWS_AS(linSolve({}, chain(), Eigen::VectorXd::Ones(5), 1, {0, 1, 2, 3, 4}), RunError);
   }
 }

@@ -29,7 +29,7 @@ std::string slurp(const std::string& path) {
 }  // namespace
 
 TEST_SUITE("output") {
-  TEST_CASE("output: CSV, JSON and VTK of a compaction run read back") {
+  TEST_CASE("output: CSV / JSON and VTK of a compaction run read back") {
     const std::string dir = std::string(AMPLE_TEST_TMP) + "/output_compaction";
     const Setup* s = findSetup("compaction");
     Params P = s->params();
@@ -83,7 +83,7 @@ TEST_SUITE("output") {
     CHECK(weightOnBase == doctest::Approx(80 * 10 * 50 * 12.5));
   }
 
-  TEST_CASE("output: --vtk 0 writes no VTK, and a rerun removes the old step files") {
+  TEST_CASE("output: --vtk 0 writes no VTK / and a rerun removes the old step files") {
     const std::string dir = std::string(AMPLE_TEST_TMP) + "/output_novtk";
     const Setup* s = findSetup("compaction");
     Params P = s->params();

@@ -9,7 +9,7 @@
 using namespace ample;
 
 TEST_SUITE("robustness") {
-  TEST_CASE("robustness: a NaN stops the step with the load step, pass and first bad point") {
+  TEST_CASE("robustness: a NaN stops the step with the load step / pass and first bad point") {
     Analysis an = testing::smallBlock(MpType::GIMP, CmType::Elastic, 2);
     an.g = 10.0;
     an.lstps = 4;
@@ -57,7 +57,7 @@ TEST_SUITE("robustness") {
 }
 
 TEST_SUITE("robustness") {
-  TEST_CASE("robustness: a point leaving the grid stops the run naming it, its position, the grid") {
+  TEST_CASE("robustness: a point leaving the grid stops the run naming it / its position / the grid") {
     const Setup* s = findSetup("collapse");
     Params P = s->params();
     setDefault(P, "width", 10);  // the toe reaches about 13.8 m
@@ -88,7 +88,7 @@ Analysis runAll(const std::string& name, const std::vector<std::pair<std::string
 }  // namespace
 
 TEST_SUITE("stress") {
-  TEST_CASE("stress: the 2x2 beam at h = 0.25 m completes with the ghost penalty, within 2 % of 6x6") {
+  TEST_CASE("stress: the 2x2 beam at h = 0.25 m completes with the ghost penalty / within 2 % of 6x6") {
     const std::vector<std::pair<std::string, double>> coarse = {{"a", 2}, {"mp", 2}};
     CHECK_THROWS_AS(runAll("beam", coarse), NewtonFailure);  // the paper: stops in step 8
     const Analysis g = runAll("beam", {{"a", 2}, {"mp", 2}, {"ghost", 0.01}});
@@ -99,7 +99,7 @@ TEST_SUITE("stress") {
     CHECK(std::abs(rg[1].second / rr[1].second - 1.0) < 0.02);  // tip v
   }
 
-  TEST_CASE("stress: with the ghost penalty, UL and PC give the same beam to 1e-8") {
+  TEST_CASE("stress: with the ghost penalty / UL and PC give the same beam to 1e-8") {
     const Analysis ul = runAll("beam", {{"a", 1}, {"mp", 6}, {"ghost", 0.01}, {"formulation", 1}});
     const Analysis pc = runAll("beam", {{"a", 1}, {"mp", 6}, {"ghost", 0.01}, {"formulation", 2}});
     double sMax = 0, dS = 0, dX = 0;

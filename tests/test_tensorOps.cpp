@@ -15,7 +15,7 @@ Matrix3d spd() {  // a symmetric positive definite tensor with distinct eigenval
 }  // namespace
 
 TEST_SUITE("tensorOps") {
-  TEST_CASE("tensorOps: strain 6-vector <-> tensor round trip; the vector carries engineering shear") {
+  TEST_CASE("tensorOps: strain 6-vector <-> tensor round trip / the vector carries engineering shear") {
     Vector6d v;
     v << 1, 2, 3, 4, 5, 6;
     const Matrix3d e = strainToTensor(v);
@@ -27,7 +27,7 @@ TEST_SUITE("tensorOps") {
     CHECK(e(1, 2) == 2.5);  // gamma_yz / 2
     CHECK(e(2, 0) == 3.0);  // gamma_zx / 2
   }
-  TEST_CASE("tensorOps: stress 6-vector <-> tensor round trip; the vector carries tensor shear") {
+  TEST_CASE("tensorOps: stress 6-vector <-> tensor round trip / the vector carries tensor shear") {
     Vector6d v;
     v << 1, 2, 3, 4, 5, 6;
     const Matrix3d s = stressToTensor(v);
@@ -50,7 +50,7 @@ TEST_SUITE("tensorOps") {
     CHECK((symLog(symExp(B)) - B).norm() <= 1e-13);
     CHECK(std::abs(symLog(A).trace() - std::log(A.determinant())) <= 1e-13);  // tr ln = ln det
   }
-  TEST_CASE("tensorOps: log of a diagonal tensor, exp of zero, repeated eigenvalues") {
+  TEST_CASE("tensorOps: log of a diagonal tensor / exp of zero / repeated eigenvalues") {
     const Matrix3d L = symLog(Vector3d(1.0, std::exp(2.0), std::exp(-1.0)).asDiagonal());
     CHECK((L - Matrix3d(Vector3d(0, 2, -1).asDiagonal())).norm() <= 1e-14);
     CHECK((symExp(Matrix3d::Zero()) - Matrix3d::Identity()).norm() <= 1e-15);
@@ -59,7 +59,7 @@ TEST_SUITE("tensorOps") {
     CHECK((E2 - Matrix3d(Vector3d(std::exp(0.5), std::exp(0.5), std::exp(-0.2)).asDiagonal()))
               .norm() <= 1e-14);
   }
-  TEST_CASE("tensorOps: symExp is the exponential of a rotated diagonal tensor, Q exp(L) Q'") {
+  TEST_CASE("tensorOps: symExp is the exponential of a rotated diagonal tensor / Q exp(L) Q'") {
     const double a = 0.7;
     Matrix3d Q;
     Q << std::cos(a), -std::sin(a), 0, std::sin(a), std::cos(a), 0, 0, 0, 1;

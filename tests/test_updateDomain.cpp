@@ -94,11 +94,11 @@ void checkRow(DomainUpdate method, const bool expected[4]) {
 
 TEST_SUITE("updateDomain") {
   //                         stretch hydro  shear  rotation
-  TEST_CASE("updateDomain: no update (None) - stretch x, hydrostatic x, shear ok, rotation ok") {
+  TEST_CASE("updateDomain: no update (None) - stretch x / hydrostatic x / shear ok / rotation ok") {
     const bool row[4] = {false, false, true, true};
     checkRow(DomainUpdate::None, row);
   }
-  TEST_CASE("updateDomain: det(F) update (eq 32) - stretch x (lengths), others ok") {
+  TEST_CASE("updateDomain: det(F) update (eq 32) - stretch x (lengths) / others ok") {
     const bool row[4] = {false, true, true, true};
     checkRow(DomainUpdate::DetF, row);
     // the cross is the artificial orthogonal contraction: area right, lengths wrong
@@ -106,7 +106,7 @@ TEST_SUITE("updateDomain") {
     CHECK(e.area <= tolOK);
     CHECK(e.length > tolBad);
   }
-  TEST_CASE("updateDomain: F_ii update (eq 33) - rotation x (vanishing domain), others ok") {
+  TEST_CASE("updateDomain: F_ii update (eq 33) - rotation x (vanishing domain) / others ok") {
     const bool row[4] = {true, true, true, false};
     checkRow(DomainUpdate::Fii, row);
     // l = l0 cos(60) in both directions: the domain shrinks to a quarter
@@ -116,7 +116,7 @@ TEST_SUITE("updateDomain") {
     updateDomain(mesh, Eigen::VectorXd::Zero(mesh.nDoF()), DomainUpdate::Fii, mp);
     CHECK((mp.lp - 0.5 * mp.lp0).norm() <= tolOK);
   }
-  TEST_CASE("updateDomain: U_ii update (eq 34) - shear x (volume changes), others ok") {
+  TEST_CASE("updateDomain: U_ii update (eq 34) - shear x (volume changes) / others ok") {
     const bool row[4] = {true, true, false, true};
     checkRow(DomainUpdate::Uii, row);
     // U of simple shear with gamma = 1 is [2 1; 1 3]/sqrt(5): area grows by 6/5
@@ -126,7 +126,7 @@ TEST_SUITE("updateDomain") {
     updateDomain(mesh, Eigen::VectorXd::Zero(mesh.nDoF()), DomainUpdate::Uii, mp);
     CHECK((mp.lp - mp.lp0.cwiseProduct(Vector2d(2, 3)) / std::sqrt(5.0)).norm() <= tolOK);
   }
-  TEST_CASE("updateDomain: corner update (eqs 35-37) - all four modes ok, stretch lengths ok") {
+  TEST_CASE("updateDomain: corner update (eqs 35-37) - all four modes ok / stretch lengths ok") {
     const bool row[4] = {true, true, true, true};
     checkRow(DomainUpdate::Corner, row);
   }
@@ -163,7 +163,7 @@ TEST_SUITE("updateDomain") {
     CHECK(mp.lp.norm() == 0.0);
   }
 
-  TEST_CASE("updateDomain: CPDI1 s = F s0, t = F t0, area = det F area0, lp = half bounding box") {
+  TEST_CASE("updateDomain: CPDI1 s = F s0 / t = F t0 / area = det F area0 / lp = half bounding box") {
     Mesh mesh = formCoord2D(4, 4, 4.0, 4.0);
     MaterialPoint mp;
     mp.mpType = MpType::CPDI1;
@@ -185,7 +185,7 @@ TEST_SUITE("updateDomain") {
     }
   }
 
-  TEST_CASE("updateDomain: CPDI2 corners move to F x_c under a homogeneous field, vp = det F vp0") {
+  TEST_CASE("updateDomain: CPDI2 corners move to F x_c under a homogeneous field / vp = det F vp0") {
     for (const Mode& m : modes()) {
       CAPTURE(m.name);
       Mesh mesh = formCoord2D(6, 6, 6.0, 6.0);

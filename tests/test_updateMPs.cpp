@@ -46,7 +46,7 @@ MaterialPoint point(MpType t, const Vector2d& x, const std::array<double, 4>& S,
 }  // namespace
 
 TEST_SUITE("updateMPs") {
-  TEST_CASE("stretchTensor: U symmetric positive definite, U U = F'F, R = F U^-1 a rotation") {
+  TEST_CASE("stretchTensor: U symmetric positive definite / U U = F'F / R = F U^-1 a rotation") {
     Matrix3d F;
     F << 1.2, 0.4, 0, -0.3, 0.9, 0, 0, 0, 1.1;
     const Matrix3d U = stretchTensor(F), R = F * U.inverse();
@@ -56,7 +56,7 @@ TEST_SUITE("updateMPs") {
     CHECK((R.transpose() * R - Matrix3d::Identity()).norm() <= 1e-13);
     CHECK(R.determinant() == doctest::Approx(1.0).epsilon(1e-13));  // proper rotation
   }
-  TEST_CASE("stretchTensor: a rotation has U = I; a rotated stretch gives the stretch back") {
+  TEST_CASE("stretchTensor: a rotation has U = I / a rotated stretch gives the stretch back") {
     CHECK((stretchTensor(rotationZ(0.6)) - Matrix3d::Identity()).norm() <= 1e-14);
     const Matrix3d U0 = Vector3d(1.3, 0.8, 1.0).asDiagonal();
     CHECK((stretchTensor(rotationZ(-1.1) * U0) - U0).norm() <= 1e-14);
@@ -86,7 +86,7 @@ TEST_SUITE("updateMPs") {
     const Vector2d du(0.1 * 0.1 - 0.2 * 0.2 + 0.3 * 0.3, 0.2 * 0.05 + 0.3 * 0.1 - 0.4 * 0.4);
     CHECK((pts[0].mpC - (Vector2d(0.5, 0.5) + du)).norm() <= 1e-15);
   }
-  TEST_CASE("updateMPs: vp = det(F) vp0; GIMP lp = lp0 U_ii, MPM lp stays 0; state stored") {
+  TEST_CASE("updateMPs: vp = det(F) vp0 / GIMP lp = lp0 U_ii / MPM lp stays 0 / state stored") {
     Matrix3d F;
     F << 1.1, 0.2, 0, -0.05, 0.85, 0, 0, 0, 1;
     const Matrix3d U = stretchTensor(F);
