@@ -97,7 +97,7 @@ if comp:
     fig.tight_layout(); fig.savefig(os.path.join(OUT, "compaction.png"), dpi=110); plt.close(fig)
 
 # 2. scaling -----------------------------------------------------------------------------------
-scal = rows("scaling")
+scal = rows("scaling") + rows("scaling2d")
 if scal:
     fig, ax = plt.subplots(1, 2, figsize=(11, 4.2))
     tables.append("\n## Scaling: run time and memory against the number of points\n")
@@ -210,6 +210,16 @@ if met:
         tables.append("| %s %s | %s | %s | %s | %s | %.2f | %.2f |\n" % (
             r["setup"], r["parameters"], "yes" if r["converged"] == "1" else "no (step %s)" % r["last_step"], val,
             "%.3f / %.3f" % pub if pub else "-", r["NR_iterations"], num(r, "wall_s"), num(r, "t_detMPs")))
+
+rem = rows("remedies")
+if rem:
+    tables.append("\n## Remedies (off by default): ghost penalty and load-step sub-division\n")
+    tables.append("| run | completed | last step | result | load-step attempts / NR its | wall s |\n|---|---|---|---|---|---|\n")
+    for r in rem:
+        res = {"beam": "tip u/l %.4f, v/l %.4f" % (num(r, "tip_u_over_l"), num(r, "tip_v_over_l")),
+               "compaction": "error %.3e" % num(r, "error")}.get(r["setup"], "%.3f / %.3f" % (num(r, "extent"), num(r, "height")))
+        tables.append("| %s %s | %s | %s | %s | %s | %.2f |\n" % (r["setup"], r["parameters"], "yes" if r["converged"] == "1" else "no",
+                                                          r["last_step"], res if r["converged"] == "1" else "-", r["NR_iterations"], num(r, "wall_s")))
 
 sav = rows("savings")
 if sav:

@@ -12,6 +12,7 @@
 //               with the load-displacement history of each run
 //   collapse    extent and height, seed 002 table 5 and seed 000 table 6
 //   newton      residuals of chosen steps (seed 000 tables 3 and 8)
+//   remedies    ghost penalty and load-step sub-division (off by default)
 //   methods     UL against PC and the GIMP domain updates on the collapse
 //               (seed 000 table 7), compaction with every update (fig 7)
 // Usage:   ample_bench [suite ...] [--out DIR] [--quick]
@@ -173,6 +174,21 @@ std::vector<Suite> suites(bool quick) {
   }
   for (const char* t : {"CPDI1", "CPDI2"}) met.cases.push_back(A({"collapse", "mp=6", std::string("mpType=") + t}));
   all.push_back(met);
+
+  // remedies (issue 6): ghost penalty on the beams that stop, sub-division of large steps
+  Suite rem{"remedies", {}, {"tip_u_over_l", "tip_v_over_l", "error", "extent", "height"}};
+  for (const char* g : {"0", "0.001", "0.01", "0.1"})
+    for (const char* mp : {"2", "6"}) rem.cases.push_back(A({"beam", "a=2", std::string("mp=") + mp, std::string("ghost=") + g}));
+  for (const char* g : {"0", "0.01"}) {
+    rem.cases.push_back(A({"beam", "a=1", "mp=6", std::string("ghost=") + g}));
+    rem.cases.push_back(A({"beam", "a=1", "mp=4", std::string("ghost=") + g}));
+  }
+  for (const char* l : {"40", "10", "5", "2", "1"}) {
+    rem.cases.push_back(A({"compaction", "nelsy=64", std::string("lstps=") + l}));
+    rem.cases.push_back(A({"compaction", "nelsy=64", std::string("lstps=") + l, "substeps=10"}));
+    rem.cases.push_back(A({"collapse", std::string("lstps=") + l, "substeps=10"}));
+  }
+  all.push_back(rem);
 
   // what skipping unused work saves: VTK output, the plastic return of points that stay
   // elastic (a von Mises model too strong to yield), domain work of standard MPM points
