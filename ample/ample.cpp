@@ -133,9 +133,27 @@ void restoreConverged(std::vector<MaterialPoint>& mpData) {
   }
 }
 
+// a setup's problem must be consistent before any work (InputError: exit 2)
+static void checkAnalysis(const Analysis& an) {
+  for (const BC& c : an.mesh.bc)
+    if (c.dof < 0 || c.dof >= an.mesh.nDoF())
+      throw InputError("boundary condition on degree of freedom " + std::to_string(c.dof) +
+                       ", which does not exist: allowed [0, " + std::to_string(an.mesh.nDoF() - 1) + "]");
+  const Vector2d lo = an.mesh.origin,
+                 hi = lo + Vector2d(an.mesh.nelsx * an.mesh.h(0), an.mesh.nelsy * an.mesh.h(1));
+  for (size_t p = 0; p < an.mpData.size(); ++p) {
+    const Vector2d& x = an.mpData[p].mpC;
+    if ((x - lo).minCoeff() < 0 || (hi - x).minCoeff() < 0)
+      throw InputError("material point " + std::to_string(p) + " at (" + std::to_string(x(0)) + ", " +
+                       std::to_string(x(1)) + ") lies outside the background grid");
+  }
+  if (an.mpData.empty()) throw InputError("the setup has no material points");
+}
+
 int ample(const Setup& setup, const Params& P, const RunOptions& opt) {
   Stopwatch total, sw;
   Analysis an = setup.setupGrid(P);                              // setupGrid
+  checkAnalysis(an);
   RunLog log;
   prepareOutput(opt.outDir);
   try {

@@ -55,6 +55,11 @@ LinSolveOut linSolve(const std::vector<BC>& bc, const SpMat& Kt, const Eigen::Ve
                    S.solver.lastErrorMessage() + "): the problem is singular, e.g. a rigid-body "
                    "mode without enough boundary conditions or a nearly empty cell");
   const Eigen::VectorXd x = S.solver.solve(rhs);
+  const double res = (S.Kff * x - rhs).norm(), scale = rhs.norm() + 1e-300;
+  if (!(res <= 1e-3 * scale))                           // a zero pivot: no solution exists
+    throw RunError("the stiffness Kt(fd,fd) is singular (linear solve residual " +
+                   std::to_string(res / scale) + " of the right-hand side): a rigid-body mode "
+                   "without enough boundary conditions, or a nearly empty cell");
   for (int r = 0; r < nfd; ++r) out.duvw(fd[r]) = x(r);
 
   const Eigen::VectorXd Ku = Kt * out.duvw;

@@ -29,6 +29,9 @@ int main(int argc, char** argv) {
   }
   try {
     return ample::ample(*req.setup, req.params, req.options);
+  } catch (const InputError& e) {      // the setup's problem is inconsistent
+    std::cerr << "ample: " << e.what() << "\n";
+    return 2;
   } catch (const std::exception& e) {  // e.g. the output folder cannot be written
     std::cerr << "ample: " << e.what() << "\n";
     return 1;

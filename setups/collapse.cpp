@@ -28,6 +28,8 @@ Params params() {
   P.push_back({"a", 2, 1, 64, false, false, true, "grid refinement: h = 2 m / a"});
   P.push_back({"width", 16, 8, 1000, true, false, false,
                "grid width (m), rounded up to whole cells; below ~14 m the toe leaves the grid"});
+  P.push_back({"supports", 1, 0, 1, false, false, true,
+               "rollers on base and left edge (1), or none (0: a rigid-body mode, for testing)"});
   P.push_back({"rho", 1000, 0, INFINITY, false, true, false, "density (kg/m3)"});
   P.push_back({"g", 10, 0, INFINITY, false, true, false, "gravitational acceleration (m/s2)"});
   return P;
@@ -40,8 +42,10 @@ Analysis setupGrid(const Params& P) {
   const int nelsx = int(std::ceil(get(P, "width") * a / 2.0 - 1e-9));  // h = 2 m / a
   an.mesh = formCoord2D(nelsx, 4 * a, nelsx * 2.0 / a, 8);
   const double eps = 1e-9 * an.mesh.h(0);
-  fixDofs(an.mesh, 0, [&](double X, double) { return X < eps; });  // left edge
-  fixDofs(an.mesh, 1, [&](double, double Y) { return Y < eps; });  // base
+  if (get(P, "supports") == 1) {
+    fixDofs(an.mesh, 0, [&](double X, double) { return X < eps; });  // left edge
+    fixDofs(an.mesh, 1, [&](double, double Y) { return Y < eps; });  // base
+  }
   fillBlock(an.mpData, Vector2d::Zero(), 4 * a, 4 * a, an.mesh.h, P, get(P, "rho"));
   return an;
 }
