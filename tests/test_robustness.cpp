@@ -179,6 +179,14 @@ TEST_SUITE("stress") {
         CHECK(std::isfinite(err));
         CHECK(err < 0.5);
       }
+    double previous = 1.0;  // GIMP, the same refinements: the error keeps falling
+    for (int e = 2; e <= 10; e += 2) {
+      CAPTURE(e);
+      const double err = findSetup("compaction")->results(
+          runAll("compaction", {{"nelsy", 1 << e}, {"mpType", 2}}), findSetup("compaction")->params())[0].second;
+      CHECK(err < 0.5 * previous);
+      previous = err;
+    }
   }
 }
 

@@ -179,10 +179,11 @@ std::vector<Suite> suites(bool quick) {
   Suite rem{"remedies", {}, {"tip_u_over_l", "tip_v_over_l", "error", "extent", "height"}};
   for (const char* g : {"0", "0.001", "0.01", "0.1"})
     for (const char* mp : {"2", "6"}) rem.cases.push_back(A({"beam", "a=2", std::string("mp=") + mp, std::string("ghost=") + g}));
-  for (const char* g : {"0", "0.01"}) {
-    rem.cases.push_back(A({"beam", "a=1", "mp=6", std::string("ghost=") + g}));
-    rem.cases.push_back(A({"beam", "a=1", "mp=4", std::string("ghost=") + g}));
-  }
+  for (const char* g : {"0", "0.01"})
+    for (const char* c : {"a=1 mp=6", "a=1 mp=4", "a=1 mp=3", "a=1 mp=2", "a=2 mp=3", "a=2 mp=4"}) {
+      const std::string cs(c);
+      rem.cases.push_back(A({"beam", cs.substr(0, 3), cs.substr(4), std::string("ghost=") + g}));
+    }
   for (const char* l : {"40", "10", "5", "2", "1"}) {
     rem.cases.push_back(A({"compaction", "nelsy=64", std::string("lstps=") + l}));
     rem.cases.push_back(A({"compaction", "nelsy=64", std::string("lstps=") + l, "substeps=10"}));
