@@ -5,7 +5,9 @@
 #include "ample/formCoord2D.h"
 #include "setups/setupHelpers.h"
 #include "setups/setups.h"
+#include <fstream>
 #include <random>
+#include <string>
 
 namespace ample::testing {
 
@@ -60,6 +62,12 @@ inline double tangentError(Analysis& an, const Eigen::VectorXd& uvw, Formulation
     Kfd.col(c) = (detMPs(up, an.mpData, form).fint - detMPs(um, an.mpData, form).fint) / (2 * d);
   }
   return (Kt - Kfd).norm() / Kt.norm();
+}
+
+// the whole text of a file ("" when it does not exist)
+inline std::string fileText(const std::string& path) {
+  std::ifstream f(path);
+  return std::string(std::istreambuf_iterator<char>(f), {});
 }
 
 }  // namespace ample::testing

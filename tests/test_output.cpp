@@ -22,10 +22,6 @@ std::vector<std::vector<double>> readCsv(const std::string& path, std::string& h
   }
   return rows;
 }
-std::string slurp(const std::string& path) {
-  std::ifstream f(path);
-  return std::string(std::istreambuf_iterator<char>(f), {});
-}
 }  // namespace
 
 TEST_SUITE("output") {
@@ -62,7 +58,7 @@ TEST_SUITE("output") {
     for (const auto& r : res) passes += r[0] == 2;
     CHECK(passes == int(steps[1][2]));                         // one row per pass
 
-    const std::string vtk = slurp(dir + "/mpData_2.vtk");
+    const std::string vtk = testing::fileText(dir + "/mpData_2.vtk");
     CHECK(vtk.rfind("# vtk DataFile Version 2.0", 0) == 0);
     std::stringstream v(vtk.substr(vtk.find("POINTS")));
     std::string word, type;
@@ -75,8 +71,8 @@ TEST_SUITE("output") {
       CHECK(x == doctest::Approx(mp[p][2]).epsilon(1e-13));
       CHECK(y == doctest::Approx(mp[p][3]).epsilon(1e-13));
     }
-    CHECK(slurp(dir + "/mesh.vtk").find("CELLS 4 20") != std::string::npos);
-    const std::string json = slurp(dir + "/summary.json");
+    CHECK(testing::fileText(dir + "/mesh.vtk").find("CELLS 4 20") != std::string::npos);
+    const std::string json = testing::fileText(dir + "/summary.json");
     CHECK(json.find("\"converged\": true") != std::string::npos);
     CHECK(json.find("\"nmp\": 16") != std::string::npos);
     CHECK(json.find("\"error\": ") != std::string::npos);
@@ -106,7 +102,7 @@ TEST_SUITE("output") {
     setDefault(P, "lstps", 2);
     setDefault(P, "NRitMax", 2);  // too few passes to reach 1e-9
     CHECK(ample::ample(*s, P, RunOptions{dir, 1, true}) == 1);
-    const std::string json = slurp(dir + "/summary.json");
+    const std::string json = testing::fileText(dir + "/summary.json");
     CHECK(json.find("\"converged\": false") != std::string::npos);
     CHECK(json.find("\"last_converged_step\": 0") != std::string::npos);
     CHECK(json.find("load step 1 did not converge") != std::string::npos);

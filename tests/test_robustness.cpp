@@ -190,13 +190,6 @@ TEST_SUITE("stress") {
   }
 }
 
-namespace {
-std::string fileText(const std::string& path) {
-  std::ifstream f(path);
-  return std::string(std::istreambuf_iterator<char>(f), {});
-}
-}  // namespace
-
 TEST_SUITE("robustness") {
   TEST_CASE("robustness: repeated serial runs write byte-identical CSV output") {
     for (const char* name : {"collapse", "shear"}) {
@@ -210,9 +203,9 @@ TEST_SUITE("robustness") {
       REQUIRE(ample::ample(*s, P, RunOptions{b, 0, true}) == 0);
       for (const char* f : {"/mp_final.csv", "/residuals.csv", "/history.csv"}) {
         CAPTURE(f);
-        CHECK(fileText(a + f) == fileText(b + f));
+        CHECK(testing::fileText(a + f) == testing::fileText(b + f));
       }
-      CHECK(fileText(a + "/mp_final.csv").size() > 1000);
+      CHECK(testing::fileText(a + "/mp_final.csv").size() > 1000);
     }
   }
 }
