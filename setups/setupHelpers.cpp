@@ -24,6 +24,7 @@ Analysis baseAnalysis(const Params& P) {
 void fillBlock(std::vector<MaterialPoint>& mpData, const Vector2d& corner, int nelsx, int nelsy,
                const Vector2d& h, const Params& P, double rho) {
   const int mp = int(get(P, "mp"));
+  mpData.reserve(mpData.size() + size_t(nelsx) * nelsy * mp * mp);  // no growth by doubling
   const Eigen::MatrixX2d mpPos = detMpPos(mp);
   for (int ey = 0; ey < nelsy; ++ey)
     for (int ex = 0; ex < nelsx; ++ex) {
