@@ -26,6 +26,7 @@
 //--------------------------------------------------------------------------
 #pragma once
 #include "linSolve.h"
+#include "stiffnessPattern.h"
 #include "mpData.h"
 
 namespace ample {
@@ -35,7 +36,6 @@ struct DetMPsOut {
   SpMat Kt;              // global tangent stiffness
 };
 
-SpMat stiffnessPattern(int nDoF, const std::vector<MaterialPoint>& mpData);  // zero-valued Kt
 DetMPsOut detMPs(const Eigen::VectorXd& uvw, std::vector<MaterialPoint>& mpData,
                  Formulation form = Formulation::UL, SpMat pattern = SpMat());
 

@@ -2,6 +2,7 @@
 // central finite differences of the assembled internal force, and a
 // homogeneous-deformation patch test.
 #include "ample/detMPs.h"
+#include "ample/stiffnessPattern.h"
 #include "constitutive/Hooke3d.h"
 #include "ample/tensorOps.h"
 #include "testProblems.h"
@@ -63,5 +64,20 @@ TEST_SUITE("detMPs") {
       const int centre = 2 * 5 + 2;  // node (2, 2): interior to the block
       CHECK(out.fint.segment<2>(2 * centre).norm() <= 1e-10 * sigA.norm());
     }
+  }
+}
+
+TEST_SUITE("stiffnessPattern") {
+  TEST_CASE("stiffnessPattern: nodes that share a point are coupled and no others") {
+    Analysis an = testing::smallBlock(MpType::MPM, CmType::Elastic, 2);  // 2 x 2 cells, 9 nodes
+    elemMPinfo(an.mesh, an.mpData);
+    const SpMat K = stiffnessPattern(an.mesh.nDoF(), an.mpData);
+    CHECK(K.nonZeros() == 4 * (4 * 4 + 4 * 6 + 9));  // corner, edge, centre nodes: 2x2 dof blocks
+    CHECK(K.isCompressed());
+    CHECK(Eigen::MatrixXd(K).cwiseAbs().sum() == 0.0);
+    Eigen::MatrixXd structure = Eigen::MatrixXd::Zero(K.rows(), K.cols());
+    for (int c = 0; c < K.outerSize(); ++c)
+      for (SpMat::InnerIterator it(K, c); it; ++it) structure(it.row(), c) = 1.0;
+    CHECK((structure - structure.transpose()).norm() == 0.0);  // symmetric pattern
   }
 }
