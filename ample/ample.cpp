@@ -1,19 +1,24 @@
 //--------------------------------------------------------------------------
 // ample — the analysis: load steps, Newton-Raphson iterations, material points
 //--------------------------------------------------------------------------
-// Seed 002 figs 4-5 and sec 3.5. For each load step lstp = 1..lstps:
-//   elemMPinfo (basis at the start of the step) -> detExtForce (scaled by
-//   lstp/lstps) -> detFDoFs -> Newton-Raphson loop { linSolve -> detMPs ->
-//   oobf = fext - fint + frct, fErr = |oobf| / |fext + frct| (eq 35) } while
-//   (fErr > tol and NRit < NRitMax) or NRit < 2 -> updateMPs -> postPro.
+// Seed 002 figs 4-5 and sec 3.5, on one page (the function ample below):
+//   setupGrid
+//   for each load step lstp = 1..lstps
+//     elemMPinfo (basis at the start of the step), detExtForce (scaled by
+//     lstp/lstps), detFDoFs
+//     Newton-Raphson: while (fErr > tol and NRit < NRitMax) or NRit < 2
+//       linSolve, detMPs, oobf = fext - fint + frct, fErr (eq 35)
+//     updateMPs
+//     postPro
 // A step that ends with fErr > tol (or a NaN, or a singular stiffness) stops the
 // run (exit 1): the state of the last converged step is kept and written, the
-// failure is named on stderr — unless substeps > 0: then the step is retried
-// in halves, up to substeps times (a remedy; the default 0 is the paper's way).
+// failure is named on stderr. Two remedies, off by default, each one line:
+// loadSteps.subdivide (substeps > 0: retry a failed step in halves) and
+// addGhostPenalty (ghost > 0). Every timed call goes through timed(seconds, f,
+// args...) (plotting/runLog.h), which is f(args...) with a stopwatch around it.
 // See ample.h for inputs and outputs.
 //--------------------------------------------------------------------------
 #include "ample.h"
-#include "constitutive/Hooke3d.h"
 #include "detExtForce.h"
 #include "detFDoFs.h"
 #include "detMPs.h"
@@ -21,6 +26,7 @@
 #include "errors.h"
 #include "ghostPenalty.h"
 #include "linSolve.h"
+#include "loadSteps.h"
 #include "plotting/postPro.h"
 #include "plotting/writeOutput.h"
 #include "updateMPs.h"
@@ -30,108 +36,90 @@
 
 namespace ample {
 
-static double largestE(const std::vector<MaterialPoint>& mpData) {
-  double E = 0.0;
-  for (const MaterialPoint& mp : mpData) E = std::max(E, mp.mCst(0));
-  return E;
-}
+// helpers of this page (defined below it): bookkeeping, not algorithm
+static void checkAnalysis(const Analysis& an);
+static void startStep(Analysis& an, int lstp, RunLog& log, bool quiet);
+static std::vector<BC> scaled(std::vector<BC> bc, double factor);
+static SpMat ghostPenaltyOf(const Analysis& an);
+static void recordPass(RunLog& log, const std::vector<MaterialPoint>& mpData, int lstp, int NRit,
+                       double fErr, bool quiet);
+static void checkConverged(const Analysis& an, int lstp, int NRit, double fErr);
+static void recordStep(RunLog& log, const Increment& inc, int NRit, double fErr, bool converged);
 
-// the message for a residual that is NaN or Inf: where it first shows
-static std::string notFinite(const std::vector<MaterialPoint>& mpData, int lstp, int NRit) {
-  std::string where = "no material point has a non-finite stress: look at the nodal forces";
-  for (size_t p = 0; p < mpData.size(); ++p)
-    if (!mpData[p].sig.allFinite() || !mpData[p].F.allFinite()) {
-      where = "first at material point " + std::to_string(p) + " (x = " +
-              std::to_string(mpData[p].mpC(0)) + ", y = " + std::to_string(mpData[p].mpC(1)) + ")";
-      break;
-    }
-  return "load step " + std::to_string(lstp) + ", Newton-Raphson pass " + std::to_string(NRit) +
-         ": the residual is not finite (NaN or Inf), " + where;
-}
-
-Eigen::VectorXd solveLoadStep(Analysis& an, int lstp, double lf, double bcScale, RunLog& log,
-                              bool quiet) {
-  Mesh& mesh = an.mesh;
-  const int nDoF = mesh.nDoF();
-  Stopwatch sw;
-  elemMPinfo(mesh, an.mpData);                                   log.t.elemMPinfo += sw.lap();
-  const Eigen::VectorXd fext = detExtForce(nDoF, an.g, an.mpData) * lf; log.t.detExtForce += sw.lap();
-  std::vector<BC> bc = mesh.bc;                                  // prescribed increments of
-  for (BC& c : bc) c.value *= bcScale;                           // this (part of a) step
-  Eigen::VectorXd oobf = fext, frct = Eigen::VectorXd::Zero(nDoF), uvw = frct;
-  const std::vector<int> fd = detFDoFs(mesh);                    log.t.detFDoFs += sw.lap();
-  double fErr = 1.0;
-  int NRit = 0;
-  SpMat Kt = stiffnessPattern(nDoF, an.mpData);                  // sparsity of this step
-  FreeSystem Kff;                                                // Kt(fd,fd) and its analysis
-  SpMat Kgp, Ksys;                                               // remedy: ghost penalty (off:
-  if (an.ghost > 0) Kgp = ghostPenalty(mesh, an.ghost, largestE(an.mpData));  // empty)
-  log.t.detMPs += sw.lap();
+int ample(const Setup& setup, const Params& P, const RunOptions& opt) {
+  RunLog log;
+  Stopwatch total;
+  Analysis an = setup.setupGrid(P);                                  // setupGrid
+  an.name = setup.name;
+  checkAnalysis(an);
+  prepareOutput(opt.outDir);
   try {
-    while ((fErr > an.tol && NRit < an.NRitMax) || NRit < 2) {
-      const SpMat& K = (an.ghost > 0 && NRit > 0) ? (Ksys = Kt + Kgp) : Kt;
-      const LinSolveOut ls = linSolve(bc, K, oobf, NRit, fd, &Kff); log.t.linSolve += sw.lap();
-      uvw += ls.duvw;
-      frct += ls.drct;
-      DetMPsOut mps = detMPs(uvw, an.mpData, an.formulation, std::move(Kt)); log.t.detMPs += sw.lap();
-      Kt = std::move(mps.Kt);
-      if (an.ghost > 0) mps.fint += Kgp * uvw;                   // penalty on the increment
-      oobf = fext - mps.fint + frct;                             // eq 31 with reactions
-      fErr = oobf.norm() / ((fext + frct).array() + DBL_EPSILON).matrix().norm();  // eq 35 (+eps)
-      log.residuals.push_back({lstp, NRit, fErr});
-      if (!quiet) std::printf("  iteration %2d  NR error %10.3e\n", NRit + 1, fErr);
-      if (!std::isfinite(fErr)) throw NewtonFailure(notFinite(an.mpData, lstp, NRit));
-      NRit++;
-    }
-  } catch (const RunError& e) {                                  // e.g. a singular stiffness
-    log.totalNRit += NRit;
-    log.steps.push_back({lstp, lf, NRit, fErr, false, 0.0});
-    throw NewtonFailure(e.what());
-  }
-  log.totalNRit += NRit;
-  log.steps.push_back({lstp, lf, NRit, fErr, fErr <= an.tol, 0.0});
-  an.frct = frct;
-  if (!(fErr <= an.tol)) {
-    char msg[200];
-    std::snprintf(msg, sizeof msg, "load step %d did not converge: fErr = %.3e > tol = %.1e "
-                  "after %d Newton-Raphson passes (NRitMax = %d)", lstp, fErr, an.tol, NRit, an.NRitMax);
-    throw NewtonFailure(msg);
-  }
-  return uvw;
-}
-
-// load factors lf0 -> lf1 of load step lstp; when Newton fails and sub-division is
-// allowed (an.substeps > depth), restore the converged state and take two halves
-static void advance(Analysis& an, int lstp, double lf0, double lf1, int depth, RunLog& log,
-                    bool quiet) {
-  Eigen::VectorXd uvw;
-  try {
-    uvw = solveLoadStep(an, lstp, lf1, (lf1 - lf0) * an.lstps, log, quiet);
-  } catch (const NewtonFailure& e) {
-    if (depth >= an.substeps) throw;
+    solve(an, log, opt);                                             // the loops, below
+  } catch (const RunError& e) {                                      // the run cannot go on
+    if (!log.steps.empty() && !log.steps.back().converged) log.steps.back().seconds = log.stepClock.lap();
     restoreConverged(an.mpData);
-    if (!quiet) std::printf("  %s: retrying with half the increment\n", e.what());
-    advance(an, lstp, lf0, 0.5 * (lf0 + lf1), depth + 1, log, quiet);
-    advance(an, lstp, 0.5 * (lf0 + lf1), lf1, depth + 1, log, quiet);
-    return;
+    log.converged = false;
+    log.message = e.what();
+    std::cerr << "ample: " << setup.name << ": " << e.what() << "\n"
+              << "ample: output kept up to the last converged load step ("
+              << log.lastConverged << ") in " << opt.outDir << "\n";
   }
-  Stopwatch sw;
-  updateMPs(an.mesh, uvw, an.domainUpdate, an.mpData);           log.t.updateMPs += sw.lap();
+  log.t.total = total.lap();
+  writeOutput(setup, P, an, log, opt.outDir, opt.quiet);
+  return log.converged ? 0 : 1;
 }
 
-void loadStep(Analysis& an, int lstp, RunLog& log, bool quiet) {
-  if (an.beforeStep) an.beforeStep(an, lstp);
-  advance(an, lstp, double(lstp - 1) / an.lstps, double(lstp) / an.lstps, 0, log, quiet);
-  if (an.afterStep) an.afterStep(an, lstp);
-}
-
-void restoreConverged(std::vector<MaterialPoint>& mpData) {
-  for (MaterialPoint& mp : mpData) {
-    mp.F = mp.Fn;
-    mp.epsE = mp.epsEn;
-    mp.sig = Hooke3d(mp.epsEn, mp.mCst).Ksig / mp.Fn.determinant();  // stored state is elastic
+void solve(Analysis& an, RunLog& log, const RunOptions& opt) {
+  Mesh& mesh = an.mesh;
+  std::vector<MaterialPoint>& mpData = an.mpData;
+  Timers& T = log.t;
+  const int nDoF = mesh.nDoF();
+  LoadSteps loadSteps(an.lstps, an.substeps);                        // lstp = 1 .. lstps
+  for (Increment inc; loadSteps.next(inc);) {                        // load steps
+    const int lstp = inc.lstp;
+    if (inc.first) startStep(an, lstp, log, opt.quiet);              // progress, setup's hook
+    timed(T.elemMPinfo, elemMPinfo, mesh, mpData);                   // basis functions
+    const Eigen::VectorXd fext = timed(T.detExtForce, detExtForce, nDoF, an.g, mpData) * inc.lf1;
+    const std::vector<BC> bc = scaled(mesh.bc, inc.bcScale(an.lstps));  // increments of this step
+    const std::vector<int> fd = timed(T.detFDoFs, detFDoFs, mesh);
+    Eigen::VectorXd uvw = Eigen::VectorXd::Zero(nDoF), frct = uvw, oobf = fext;
+    DetMPsOut mps{uvw, timed(T.detMPs, stiffnessPattern, nDoF, mpData)};  // Kt's sparsity, once
+    FreeSystem Kff;                                                  // Kt(fd,fd), analysed once
+    const SpMat Kgp = ghostPenaltyOf(an);                            // remedy (off: empty)
+    double fErr = 1.0;
+    int NRit = 0;
+    try {
+      while ((fErr > an.tol && NRit < an.NRitMax) || NRit < 2) {     // Newton-Raphson
+        const LinSolveOut ls = timed(T.linSolve, linSolve, bc, mps.Kt, oobf, NRit, fd, &Kff);
+        uvw += ls.duvw;                                              // eq 29
+        frct += ls.drct;
+        mps = timed(T.detMPs, detMPs, uvw, mpData, an.formulation, std::move(mps.Kt));
+        addGhostPenalty(Kgp, uvw, mps.Kt, mps.fint);                 // remedy (off: nothing)
+        oobf = fext - mps.fint + frct;                               // eq 31 with reactions
+        fErr = oobf.norm() / ((fext + frct).array() + DBL_EPSILON).matrix().norm();  // eq 35
+        recordPass(log, mpData, lstp, NRit, fErr, opt.quiet);        // throws on NaN
+        NRit++;
+      }
+      checkConverged(an, lstp, NRit, fErr);                          // throws when fErr > tol
+    } catch (const RunError& e) {                                    // no convergence, NaN, singular
+      recordStep(log, inc, NRit, fErr, false);
+      loadSteps.subdivide(inc, e, mpData, opt.quiet);                // remedy (off: rethrows e)
+      continue;
+    }
+    recordStep(log, inc, NRit, fErr, true);
+    an.frct = frct;
+    timed(T.updateMPs, updateMPs, mesh, uvw, an.domainUpdate, mpData);
+    if (!inc.last) continue;                                         // (remedy: a first half)
+    if (an.afterStep) an.afterStep(an, lstp);                        // setup's hook
+    timed(T.postPro, postPro, mesh, mpData, lstp, opt.vtkEvery, opt.outDir);
+    log.steps.back().seconds = log.stepClock.lap();
+    log.lastConverged = lstp;
   }
 }
+
+//--------------------------------------------------------------------------
+// the helpers of the page above
+//--------------------------------------------------------------------------
 
 // a setup's problem must be consistent before any work (InputError: exit 2)
 static void checkAnalysis(const Analysis& an) {
@@ -150,34 +138,57 @@ static void checkAnalysis(const Analysis& an) {
   if (an.mpData.empty()) throw InputError("the setup has no material points");
 }
 
-int ample(const Setup& setup, const Params& P, const RunOptions& opt) {
-  Stopwatch total, sw;
-  Analysis an = setup.setupGrid(P);                              // setupGrid
-  checkAnalysis(an);
-  RunLog log;
-  prepareOutput(opt.outDir);
-  try {
-    for (int lstp = 1; lstp <= an.lstps; ++lstp) {               // load steps
-      if (!opt.quiet) std::printf("%s: load step %d of %d\n", setup.name, lstp, an.lstps);
-      sw.lap();
-      loadStep(an, lstp, log, opt.quiet);
-      Stopwatch swP;
-      postPro(an.mesh, an.mpData, lstp, opt.vtkEvery, opt.outDir); log.t.postPro += swP.lap();
-      log.steps.back().seconds = sw.lap();
-      log.lastConverged = lstp;
+// the start of load step lstp: its progress line, its clock, the setup's hook
+static void startStep(Analysis& an, int lstp, RunLog& log, bool quiet) {
+  if (!quiet) std::printf("%s: load step %d of %d\n", an.name.c_str(), lstp, an.lstps);
+  log.stepClock.lap();
+  if (an.beforeStep) an.beforeStep(an, lstp);
+}
+
+// the prescribed increments of this step (or of a part of it)
+static std::vector<BC> scaled(std::vector<BC> bc, double factor) {
+  for (BC& c : bc) c.value *= factor;
+  return bc;
+}
+
+// remedy: the ghost penalty of the edge cells of this step, empty when ghost = 0
+static SpMat ghostPenaltyOf(const Analysis& an) {
+  if (!(an.ghost > 0)) return SpMat();
+  double E = 0.0;                                                 // the stiffest point's E
+  for (const MaterialPoint& mp : an.mpData) E = std::max(E, mp.mCst(0));
+  return ghostPenalty(an.mesh, an.ghost, E);
+}
+
+// one Newton-Raphson pass: residuals.csv row, progress line; a NaN or Inf stops
+// the step, naming the first point whose stress is not finite
+static void recordPass(RunLog& log, const std::vector<MaterialPoint>& mpData, int lstp, int NRit,
+                       double fErr, bool quiet) {
+  log.residuals.push_back({lstp, NRit, fErr});
+  if (!quiet) std::printf("  iteration %2d  NR error %10.3e\n", NRit + 1, fErr);
+  if (std::isfinite(fErr)) return;
+  std::string where = "no material point has a non-finite stress: look at the nodal forces";
+  for (size_t p = 0; p < mpData.size(); ++p)
+    if (!mpData[p].sig.allFinite() || !mpData[p].F.allFinite()) {
+      where = "first at material point " + std::to_string(p) + " (x = " +
+              std::to_string(mpData[p].mpC(0)) + ", y = " + std::to_string(mpData[p].mpC(1)) + ")";
+      break;
     }
-  } catch (const RunError& e) {
-    if (!log.steps.empty() && !log.steps.back().converged) log.steps.back().seconds = sw.lap();
-    restoreConverged(an.mpData);
-    log.converged = false;
-    log.message = e.what();
-    std::cerr << "ample: " << setup.name << ": " << e.what() << "\n"
-              << "ample: output kept up to the last converged load step ("
-              << log.lastConverged << ") in " << opt.outDir << "\n";
-  }
-  log.t.total = total.lap();
-  writeOutput(setup, P, an, log, opt.outDir, opt.quiet);
-  return log.converged ? 0 : 1;
+  throw NewtonFailure("load step " + std::to_string(lstp) + ", Newton-Raphson pass " +
+                      std::to_string(NRit) + ": the residual is not finite (NaN or Inf), " + where);
+}
+
+static void checkConverged(const Analysis& an, int lstp, int NRit, double fErr) {
+  if (fErr <= an.tol) return;
+  char msg[200];
+  std::snprintf(msg, sizeof msg, "load step %d did not converge: fErr = %.3e > tol = %.1e "
+                "after %d Newton-Raphson passes (NRitMax = %d)", lstp, fErr, an.tol, NRit, an.NRitMax);
+  throw NewtonFailure(msg);
+}
+
+// one steps.csv row per attempt at a load step (its seconds are set at its end)
+static void recordStep(RunLog& log, const Increment& inc, int NRit, double fErr, bool converged) {
+  log.totalNRit += NRit;
+  log.steps.push_back({inc.lstp, inc.lf1, NRit, fErr, converged, 0.0});
 }
 
 }  // namespace ample

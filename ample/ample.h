@@ -1,16 +1,20 @@
 //--------------------------------------------------------------------------
 // ample — the analysis: load steps, Newton-Raphson iterations, material points
 //--------------------------------------------------------------------------
-// Seed 002 sec 4, figs 4-5. Builds the problem with the setup's setupGrid,
-// runs the load steps and writes the output (see plotting/writeOutput.h).
+// Seed 002 sec 4, figs 4-5. ample builds the problem with the setup's
+// setupGrid, runs the loops (solve) and writes the output (see
+// plotting/writeOutput.h). solve is the loops alone, on an analysis already
+// set up, in memory: the tests call it.
 // Inputs:  setup (from the table) · P (its parameters) · opt (output folder,
-//          VTK interval, quiet)
+//          VTK interval, quiet) | an · log
 // Outputs: files in opt.outDir · return value: 0 converged, 1 a load step did
-//          not converge or the run could not go on (message on stderr)
-// Tests:   tests/test_ample.cpp
+//          not converge or the run could not go on (message on stderr) |
+//          an (mesh, mpData, frct) · log; solve throws RunError (NewtonFailure
+//          for a failed Newton-Raphson loop) where ample stops the run
+// Tests:   tests/test_ample.cpp, tests/test_robustness.cpp
 //--------------------------------------------------------------------------
 #pragma once
-#include "mpData.h"
+#include "analysis.h"
 #include "plotting/runLog.h"
 #include "setups/setups.h"
 #include <string>
@@ -25,16 +29,8 @@ struct RunOptions {
 
 int ample(const Setup& setup, const Params& P, const RunOptions& opt);
 
-// the Newton-Raphson loop of one load step (seed 002 fig 5, lines 21-30) to the
-// load factor lf, with the prescribed increments scaled by bcScale (1 for a whole
-// step); returns uvw, the converged displacement increment; throws NewtonFailure
-Eigen::VectorXd solveLoadStep(Analysis& an, int lstp, double lf, double bcScale, RunLog& log,
-                              bool quiet);
-
-// one load step: the setup's beforeStep, solveLoadStep, updateMPs, the setup's afterStep
-void loadStep(Analysis& an, int lstp, RunLog& log, bool quiet);
-
-// undo the point loop's trial state (F, epsE, sig) back to the converged one
-void restoreConverged(std::vector<MaterialPoint>& mpData);
+// the load steps lstp = 1..an.lstps with their Newton-Raphson loops (seed 002
+// fig 4 below setupGrid); by default quiet and without files
+void solve(Analysis& an, RunLog& log, const RunOptions& opt = RunOptions{"", 0, true});
 
 }  // namespace ample

@@ -30,9 +30,9 @@ static void setParam(Params& P, const std::string& name, const std::string& text
       if (text == p.names[k]) v = p.lo + double(k);
     if (std::isnan(v)) v = parseNumber(name, text);
     const bool inRange = (p.loOpen ? v > p.lo : v >= p.lo) && (p.hiOpen ? v < p.hi : v <= p.hi);
-    if (!inRange || (p.integer && v != std::floor(v)))
+    if (!inRange || (p.isInteger && v != std::floor(v)))
       throw InputError("parameter '" + name + "' = " + text + " is out of range: allowed " +
-                       rangeText(p) + " (" + p.help + ")");
+                       rangeText(p) + " (" + p.helpText + ")");
     p.value = v;
     return;
   }
@@ -101,7 +101,7 @@ std::string setupHelpText(const Setup& setup) {
   std::ostringstream s;
   s << setup.name << ": " << setup.description << "\nparameters (name=value):\n";
   for (const Param& p : setup.params())
-    s << "  " << p.name << " = " << p.value << "\t" << p.help << "; " << rangeText(p) << "\n";
+    s << "  " << p.name << " = " << p.value << "\t" << p.helpText << "; " << rangeText(p) << "\n";
   return s.str();
 }
 

@@ -4,7 +4,6 @@
 // Seed 002 eqs 5-18, 30-31. See detMPs.h for the steps, inputs and outputs.
 //--------------------------------------------------------------------------
 #include "detMPs.h"
-#include <algorithm>
 #include "constitutive/Hooke3d.h"
 #include "constitutive/VMconst.h"
 #include "formPCstiff.h"
@@ -12,21 +11,6 @@
 #include "tensorOps.h"
 
 namespace ample {
-
-// add the point stiffness ke (rows and columns: the ascending dofs d) to Kt, whose
-// pattern already holds these entries: a merge along each column, no search tree
-static void addToPattern(SpMat& Kt, const int* d, int n, const Eigen::Ref<const Eigen::MatrixXd>& ke) {
-  const int* inner = Kt.innerIndexPtr();
-  double* val = Kt.valuePtr();
-  for (int q = 0; q < n; ++q) {
-    int pos = int(std::lower_bound(inner + Kt.outerIndexPtr()[d[q]],
-                                   inner + Kt.outerIndexPtr()[d[q] + 1], d[0]) - inner);
-    for (int p = 0; p < n; ++p) {
-      while (inner[pos] < d[p]) ++pos;
-      val[pos] += ke(p, q);
-    }
-  }
-}
 
 DetMPsOut detMPs(const Eigen::VectorXd& uvw, std::vector<MaterialPoint>& mpData,
                  Formulation form, SpMat pattern) {

@@ -25,7 +25,6 @@
 // Tests:   tests/test_detMPs.cpp
 //--------------------------------------------------------------------------
 #pragma once
-#include "linSolve.h"
 #include "stiffnessPattern.h"
 #include "mpData.h"
 

@@ -63,4 +63,10 @@ SpMat ghostPenalty(const Mesh& mesh, double gamma, double E) {
   return K;
 }
 
+void addGhostPenalty(const SpMat& Kgp, const Eigen::VectorXd& uvw, SpMat& Kt, Eigen::VectorXd& fint) {
+  if (Kgp.nonZeros() == 0) return;  // remedy off
+  Kt = Kt + Kgp;                    // the pattern grows by the faces' couplings once
+  fint += Kgp * uvw;                // penalty on the increment
+}
+
 }  // namespace ample

@@ -12,16 +12,19 @@
 // F (2-point Gauss along F), E the largest Young's modulus of the points. The
 // penalty acts on the displacement increment of the step: fint += K_gp uvw.
 // Off (gamma = 0) by default, so the paper's algorithm is unchanged.
-// Inputs:  mesh (etpl, eInA, nelsx, nelsy, h, coord) · gamma · E
-// Outputs: K_gp (nDoF x nDoF), empty when no face qualifies
+// addGhostPenalty is its one line in the Newton-Raphson loop, after detMPs:
+// Kt += K_gp, fint += K_gp uvw; it does nothing when K_gp is empty (ghost = 0).
+// Inputs:  mesh (etpl, eInA, nelsx, nelsy, h, coord) · gamma · E | K_gp · uvw
+// Outputs: K_gp (nDoF x nDoF), empty when no face qualifies | Kt, fint
 // Tests:   tests/test_robustness.cpp
 //--------------------------------------------------------------------------
 #pragma once
-#include "linSolve.h"
+#include "stiffnessPattern.h"
 #include "mpData.h"
 
 namespace ample {
 
 SpMat ghostPenalty(const Mesh& mesh, double gamma, double E);
+void addGhostPenalty(const SpMat& Kgp, const Eigen::VectorXd& uvw, SpMat& Kt, Eigen::VectorXd& fint);
 
 }  // namespace ample

@@ -5,28 +5,8 @@
 //--------------------------------------------------------------------------
 #include "linSolve.h"
 #include "errors.h"
-#include <Eigen/SparseLU>
 
 namespace ample {
-
-void buildFreeSystem(const SpMat& Kt, const std::vector<int>& fd, FreeSystem& S) {
-  const int nfd = int(fd.size());
-  std::vector<int> freeIdx(Kt.rows(), -1);              // global dof -> row of Kt(fd,fd)
-  for (int r = 0; r < nfd; ++r) freeIdx[fd[r]] = r;
-  std::vector<Eigen::Triplet<double>> trip;             // value = position of the entry in Kt
-  for (int c = 0; c < Kt.outerSize(); ++c)
-    if (freeIdx[c] >= 0)
-      for (int e = Kt.outerIndexPtr()[c]; e < Kt.outerIndexPtr()[c + 1]; ++e)
-        if (freeIdx[Kt.innerIndexPtr()[e]] >= 0)
-          trip.emplace_back(freeIdx[Kt.innerIndexPtr()[e]], freeIdx[c], double(e));
-  S.Kff = SpMat(nfd, nfd);
-  S.Kff.setFromTriplets(trip.begin(), trip.end());      // no duplicates: each value is one e
-  S.fromKt.resize(S.Kff.nonZeros());
-  for (int e = 0; e < S.Kff.nonZeros(); ++e) S.fromKt[e] = int(S.Kff.valuePtr()[e]);
-  S.solver.analyzePattern(S.Kff);                       // symbolic analysis, once per pattern
-  S.fd = fd;
-  S.ktNonZeros = Kt.nonZeros();
-}
 
 LinSolveOut linSolve(const std::vector<BC>& bc, const SpMat& Kt, const Eigen::VectorXd& oobf,
                      int NRit, const std::vector<int>& fd, FreeSystem* cache) {
@@ -43,8 +23,7 @@ LinSolveOut linSolve(const std::vector<BC>& bc, const SpMat& Kt, const Eigen::Ve
   }
   FreeSystem local;                                     // no cache given: build it here
   FreeSystem& S = cache ? *cache : local;
-  if (S.fd != fd || S.ktNonZeros != Kt.nonZeros()) buildFreeSystem(Kt, fd, S);
-  for (int e = 0; e < S.Kff.nonZeros(); ++e) S.Kff.valuePtr()[e] = Kt.valuePtr()[S.fromKt[e]];
+  refillFreeSystem(Kt, fd, S);                          // S.Kff = Kt(fd,fd) (fast part)
 
   Eigen::VectorXd rhs(nfd);
   for (int r = 0; r < nfd; ++r) rhs(r) = oobf(fd[r]) - Kd(fd[r]);

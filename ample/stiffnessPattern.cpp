@@ -1,7 +1,7 @@
 //--------------------------------------------------------------------------
 // stiffnessPattern — the sparsity of Kt for one load step
 //--------------------------------------------------------------------------
-// See stiffnessPattern.h for inputs and outputs.
+// Seed 002 eq 30. See stiffnessPattern.h for what it saves, inputs and outputs.
 //--------------------------------------------------------------------------
 #include "stiffnessPattern.h"
 #include <algorithm>
@@ -33,6 +33,21 @@ SpMat stiffnessPattern(int nDoF, const std::vector<MaterialPoint>& mpData) {
         for (int i = 0; i < nD; ++i) K.insert(dof(rows[e], i), dof(n, k)) = 0.0;
   K.makeCompressed();
   return K;
+}
+
+// Kt's pattern already holds the entries of ke: walk each column once from the
+// point's first dof instead of searching for every entry
+void addToPattern(SpMat& Kt, const int* d, int n, const Eigen::Ref<const Eigen::MatrixXd>& ke) {
+  const int* inner = Kt.innerIndexPtr();
+  double* val = Kt.valuePtr();
+  for (int q = 0; q < n; ++q) {
+    int pos = int(std::lower_bound(inner + Kt.outerIndexPtr()[d[q]],
+                                   inner + Kt.outerIndexPtr()[d[q] + 1], d[0]) - inner);
+    for (int p = 0; p < n; ++p) {
+      while (inner[pos] < d[p]) ++pos;
+      val[pos] += ke(p, q);
+    }
+  }
 }
 
 }  // namespace ample

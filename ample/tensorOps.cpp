@@ -64,4 +64,10 @@ Matrix3d symLog(const Matrix3d& A) {
   return symFunction(A, [](double x) { return std::log(x); });
 }
 
+Matrix3d stretchTensor(const Matrix3d& F) {
+  Eigen::SelfAdjointEigenSolver<Matrix3d> es(F.transpose() * F);
+  const Vector3d s = es.eigenvalues().cwiseSqrt();
+  return es.eigenvectors() * s.asDiagonal() * es.eigenvectors().transpose();
+}
+
 }  // namespace ample

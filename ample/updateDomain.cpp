@@ -6,7 +6,7 @@
 #include "updateDomain.h"
 #include "MPMbasis.h"
 #include "domainCorners.h"
-#include "updateMPs.h"
+#include "tensorOps.h"
 #include <cmath>
 
 namespace ample {

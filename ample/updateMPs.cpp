@@ -5,15 +5,8 @@
 //--------------------------------------------------------------------------
 #include "updateMPs.h"
 #include "updateDomain.h"
-#include <Eigen/Eigenvalues>
 
 namespace ample {
-
-Matrix3d stretchTensor(const Matrix3d& F) {
-  Eigen::SelfAdjointEigenSolver<Matrix3d> es(F.transpose() * F);
-  const Vector3d s = es.eigenvalues().cwiseSqrt();
-  return es.eigenvectors() * s.asDiagonal() * es.eigenvectors().transpose();
-}
 
 void updateMPs(const Mesh& mesh, const Eigen::VectorXd& uvw, DomainUpdate method,
                std::vector<MaterialPoint>& mpData) {

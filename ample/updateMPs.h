@@ -17,7 +17,6 @@
 
 namespace ample {
 
-Matrix3d stretchTensor(const Matrix3d& F);  // U = sqrt(F'F), the right stretch tensor
 void updateMPs(const Mesh& mesh, const Eigen::VectorXd& uvw, DomainUpdate method,
                std::vector<MaterialPoint>& mpData);
 

@@ -9,9 +9,16 @@
 // Tests:   tests/test_constitutive.cpp
 //--------------------------------------------------------------------------
 #pragma once
-#include "ample/mpData.h"
+#include <Eigen/Dense>
 
 namespace ample {
+
+// constitutive/ stands alone (Eigen only): strains, stresses and constants in,
+// stresses and tangents out; it knows nothing of material points or grids.
+// The same aliases are declared in ample/mpData.h (an alias may be repeated).
+using Vector6d = Eigen::Matrix<double, 6, 1>;
+using Matrix6d = Eigen::Matrix<double, 6, 6>;
+using Eigen::Vector3d;
 
 struct ConstOut {
   Matrix6d D;       // algorithmic tangent d(tau)/d(eps_tr)

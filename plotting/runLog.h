@@ -8,6 +8,7 @@
 #pragma once
 #include <chrono>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace ample {
@@ -44,6 +45,19 @@ class Stopwatch {    // lap() returns the seconds since the previous lap (or sta
   std::chrono::steady_clock::time_point last_ = std::chrono::steady_clock::now();
 };
 
+// timed(seconds, f, args...) is f(args...) with its wall time added to seconds:
+// the main loop times each call of fig 4 without a line of its own
+struct ScopedTimer {
+  double& seconds;
+  Stopwatch sw;
+  ~ScopedTimer() { seconds += sw.lap(); }
+};
+template <class F, class... Args>
+decltype(auto) timed(double& seconds, F&& f, Args&&... args) {
+  ScopedTimer timer{seconds, Stopwatch()};
+  return f(std::forward<Args>(args)...);
+}
+
 struct RunLog {
   std::vector<StepRow> steps;
   std::vector<ResidualRow> residuals;
@@ -52,6 +66,7 @@ struct RunLog {
   bool converged = true;
   int lastConverged = 0;        // last load step that converged
   std::string message;          // why the run stopped early (empty when complete)
+  Stopwatch stepClock;          // lapped at the start and the end of each load step
 };
 
 }  // namespace ample

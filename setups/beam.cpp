@@ -14,7 +14,6 @@
 //--------------------------------------------------------------------------
 #include "ample/formCoord2D.h"
 #include "setupHelpers.h"
-#include "setupList.h"
 #include <cmath>
 
 namespace ample::beam {
@@ -26,8 +25,8 @@ Params params() {
   setDefault(P, "mp", 6);
   setDefault(P, "E", 12e6);
   setDefault(P, "nu", 0.2);
-  P.push_back({"a", 2, 1, 64, false, false, true, "grid refinement: h = 0.5 m / a"});
-  P.push_back({"P", 100e3, 0, INFINITY, false, true, false, "tip load, acting downwards (N)"});
+  P.push_back(Param("a", 2).integer(1, 64).help("grid refinement: h = 0.5 m / a"));
+  P.push_back(Param("P", 100e3).atLeast(0).help("tip load, acting downwards (N)"));
   return P;
 }
 

@@ -13,7 +13,6 @@
 //--------------------------------------------------------------------------
 #include "ample/formCoord2D.h"
 #include "setupHelpers.h"
-#include "setupList.h"
 #include <cmath>
 
 namespace ample::collapse {
@@ -25,13 +24,13 @@ Params params() {
   setDefault(P, "E", 1e6);
   setDefault(P, "nu", 0.3);
   setDefault(P, "rhoY", 20e3);
-  P.push_back({"a", 2, 1, 64, false, false, true, "grid refinement: h = 2 m / a"});
-  P.push_back({"width", 16, 8, 1000, true, false, false,
-               "grid width (m), rounded up to whole cells; below ~14 m the toe leaves the grid"});
-  P.push_back({"supports", 1, 0, 1, false, false, true,
-               "rollers on base and left edge (1), or none (0: a rigid-body mode, for testing)"});
-  P.push_back({"rho", 1000, 0, INFINITY, false, true, false, "density (kg/m3)"});
-  P.push_back({"g", 10, 0, INFINITY, false, true, false, "gravitational acceleration (m/s2)"});
+  P.push_back(Param("a", 2).integer(1, 64).help("grid refinement: h = 2 m / a"));
+  P.push_back(Param("width", 16).above(8).atMost(1000)
+                  .help("grid width (m), rounded up to whole cells; below ~14 m the toe leaves the grid"));
+  P.push_back(Param("supports", 1).integer(0, 1)
+                  .help("rollers on base and left edge (1), or none (0: a rigid-body mode, for testing)"));
+  P.push_back(Param("rho", 1000).atLeast(0).help("density (kg/m3)"));
+  P.push_back(Param("g", 10).atLeast(0).help("gravitational acceleration (m/s2)"));
   return P;
 }
 

@@ -12,7 +12,6 @@
 //--------------------------------------------------------------------------
 #include "ample/formCoord2D.h"
 #include "setupHelpers.h"
-#include "setupList.h"
 #include <cmath>
 
 namespace ample::compaction {
@@ -21,10 +20,10 @@ Params params() {
   Params P = commonParams(40);
   setDefault(P, "E", 10e3);
   setDefault(P, "nu", 0.0);
-  P.push_back({"nelsy", 64, 1, 1 << 22, false, false, true, "cells over the column height"});
-  P.push_back({"l0", 50, 0, INFINITY, true, true, false, "column height (m)"});
-  P.push_back({"rho", 80, 0, INFINITY, false, true, false, "density (kg/m3)"});
-  P.push_back({"g", 10, 0, INFINITY, false, true, false, "gravitational acceleration (m/s2)"});
+  P.push_back(Param("nelsy", 64).integer(1, 1 << 22).help("cells over the column height"));
+  P.push_back(Param("l0", 50).above(0).help("column height (m)"));
+  P.push_back(Param("rho", 80).atLeast(0).help("density (kg/m3)"));
+  P.push_back(Param("g", 10).atLeast(0).help("gravitational acceleration (m/s2)"));
   return P;
 }
 

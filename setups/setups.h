@@ -7,46 +7,46 @@
 // (name=value); each carries its default, its valid range and a help line.
 //--------------------------------------------------------------------------
 #pragma once
-#include "ample/mpData.h"
-#include <functional>
+#include "ample/analysis.h"
+#include <cmath>
 #include <string>
 #include <utility>
 #include <vector>
 
 namespace ample {
 
+// One parameter of a setup, declared with a small builder that reads as its
+// meaning, e.g.
+//   Param("a", 2).integer(1, 64).help("grid refinement: h = 0.5 m / a")
+//   Param("E", 1e6).above(0).help("Young's modulus (Pa)")          // (0, inf)
+//   Param("mpType", 2).choice(1, {"MPM", "GIMP", "CPDI1", "CPDI2"})
+// Without bounds a parameter takes any finite number.
 struct Param {
   std::string name;
-  double value;          // default, replaced by the command line
-  double lo, hi;         // valid range
-  bool loOpen, hiOpen;   // true: the bound itself is excluded
-  bool integer;          // must be a whole number
-  std::string help;      // meaning and unit
-  std::vector<std::string> names = {};  // optional names of the values lo, lo+1, ...
+  double value = 0;                       // default, replaced by the command line
+  double lo = -INFINITY, hi = INFINITY;   // valid range
+  bool loOpen = true, hiOpen = true;      // true: the bound itself is excluded
+  bool isInteger = false;                 // must be a whole number
+  std::string helpText;                   // meaning and unit
+  std::vector<std::string> names;         // optional names of the values lo, lo+1, ...
+
+  Param(std::string name_, double value_) : name(std::move(name_)), value(value_) {}
+  Param& atLeast(double v) { lo = v; loOpen = false; return *this; }    // [v, ...
+  Param& above(double v) { lo = v; loOpen = true; return *this; }       // (v, ...
+  Param& atMost(double v) { hi = v; hiOpen = false; return *this; }     // ..., v]
+  Param& below(double v) { hi = v; hiOpen = true; return *this; }       // ..., v)
+  Param& range(double l, double h) { return atLeast(l).atMost(h); }    // [l, h]
+  Param& integer(double l, double h) { isInteger = true; return range(l, h); }  // whole, [l, h]
+  Param& choice(int first, std::vector<std::string> valueNames) {       // first, first+1, ... by name
+    names = std::move(valueNames);
+    return integer(first, first + double(names.size()) - 1);
+  }
+  Param& help(std::string text) { helpText = std::move(text); return *this; }
 };
 using Params = std::vector<Param>;
 
 double get(const Params& P, const std::string& name);  // value of a parameter
 std::string rangeText(const Param& p);                 // e.g. "(0, inf)" or "integer in [1, 64]"
-
-struct Analysis {
-  Mesh mesh;                          // background grid with boundary conditions
-  std::vector<MaterialPoint> mpData;  // material points
-  int lstps = 1;                      // number of load steps
-  double g = 0;                       // gravitational acceleration (m/s2), acting in -y
-  double tol = 1e-9;                  // Newton-Raphson tolerance on fErr (eq 35)
-  int NRitMax = 10;                   // most Newton-Raphson passes per load step
-  int substeps = 0;                   // halvings of a failed load step allowed (0: none)
-  double ghost = 0;                   // ghost-penalty factor of the edge cells (0: none)
-  Formulation formulation = Formulation::UL;        // frame of equilibrium (seed 000)
-  DomainUpdate domainUpdate = DomainUpdate::Uii;    // GIMP domain update (seed 002 eq 34)
-  Eigen::VectorXd frct;                             // reactions of the last converged step
-  // optional work of a setup at the start / end of each load step (nullptr: none),
-  // e.g. a grid that follows the body, boundary cells that change, a reaction history
-  std::function<void(Analysis& an, int lstp)> beforeStep, afterStep;
-  std::vector<int> tagged;                          // points a setup marks for its hooks
-  std::vector<std::vector<std::pair<std::string, double>>> history;  // rows for history.csv
-};
 
 using Results = std::vector<std::pair<std::string, double>>;  // named figures of a run
 

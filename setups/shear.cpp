@@ -19,7 +19,6 @@
 #include "ample/formCoord2D.h"
 #include "homogeneous.h"
 #include "setupHelpers.h"
-#include "setupList.h"
 #include <cmath>
 
 namespace ample::shear {
@@ -30,11 +29,10 @@ Params params() {
   setDefault(P, "E", 10e3);
   setDefault(P, "nu", 0.3);
   setDefault(P, "rhoY", 5e3);
-  P.push_back({"nels", 8, 1, 256, false, false, true, "cells across the unit square: h = 1 m / nels"});
-  P.push_back({"dl", 6, 0, 50, false, false, false, "shear displacement of the top (m)"});
-  P.push_back({"prescribe", 2, 1, 2, false, false, true,
-               "nodes given the shear: of the cells linked to the outer layer of points, or of all cells",
-               {"boundary", "all"}});
+  P.push_back(Param("nels", 8).integer(1, 256).help("cells across the unit square: h = 1 m / nels"));
+  P.push_back(Param("dl", 6).range(0, 50).help("shear displacement of the top (m)"));
+  P.push_back(Param("prescribe", 2).choice(1, {"boundary", "all"})
+                  .help("nodes given the shear: of the cells linked to the outer layer of points, or of all cells"));
   return P;
 }
 

@@ -18,7 +18,6 @@
 #include "ample/formCoord2D.h"
 #include "homogeneous.h"
 #include "setupHelpers.h"
-#include "setupList.h"
 #include <cmath>
 
 namespace ample::stretch {
@@ -29,7 +28,7 @@ Params params() {
   setDefault(P, "E", 1000);
   setDefault(P, "nu", 0.0);
   setDefault(P, "rhoY", 400);
-  P.push_back({"du", 0.2, 0, 10, false, false, false, "displacement of the right side per step"});
+  P.push_back(Param("du", 0.2).range(0, 10).help("displacement of the right side per step"));
   return P;
 }
 

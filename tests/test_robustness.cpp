@@ -2,6 +2,7 @@
 // pass and the first bad point; a failed load step can be rescued by sub-division.
 #include "ample/ample.h"
 #include "ample/errors.h"
+#include "ample/loadSteps.h"
 #include "testProblems.h"
 #include <doctest/doctest.h>
 #include <cmath>
@@ -20,7 +21,7 @@ TEST_SUITE("robustness") {
     an.mpData[3].mCst(0) = NAN;                    // Young's modulus of point 3
     RunLog log;
     try {
-      loadStep(an, 1, log, true);
+      solve(an, log);
       FAIL("no exception");
     } catch (const NewtonFailure& e) {
       const std::string m = e.what();
@@ -39,11 +40,11 @@ TEST_SUITE("robustness") {
     setDefault(P, "lstps", 1);
     RunLog log0;
     Analysis plain = s->setupGrid(P);
-    CHECK_THROWS_AS(loadStep(plain, 1, log0, true), NewtonFailure);  // the paper's algorithm
+    CHECK_THROWS_AS(solve(plain, log0), NewtonFailure);  // the paper's algorithm
     setDefault(P, "substeps", 8);
     Analysis an = s->setupGrid(P);
     RunLog log;
-    loadStep(an, 1, log, true);
+    solve(an, log);
     CHECK(log.steps.back().converged);
     CHECK(log.steps.back().loadFactor == 1.0);
     CHECK(log.steps.size() > 2);                                     // every attempt recorded
@@ -51,7 +52,7 @@ TEST_SUITE("robustness") {
     setDefault(P, "lstps", 40);
     Analysis fine = s->setupGrid(P);
     RunLog logF;
-    for (int l = 1; l <= 40; ++l) loadStep(fine, l, logF, true);
+    solve(fine, logF);
     const double e1 = s->results(an, P)[0].second, e40 = s->results(fine, P)[0].second;
     CHECK(std::abs(e1 - e40) <= 0.5 * e40);  // same analytic solution, stepped differently
   }
@@ -65,7 +66,7 @@ TEST_SUITE("robustness") {
     Analysis an = s->setupGrid(P);
     RunLog log;
     try {
-      for (int l = 1; l <= an.lstps; ++l) loadStep(an, l, log, true);
+      solve(an, log);
       FAIL("the toe never left the grid");
     } catch (const RunError& e) {
       const std::string m = e.what();
@@ -83,7 +84,7 @@ Analysis runAll(const std::string& name, const std::vector<std::pair<std::string
   for (const auto& kv : set) setDefault(P, kv.first, kv.second);
   Analysis an = s->setupGrid(P);
   RunLog log;
-  for (int l = 1; l <= an.lstps; ++l) loadStep(an, l, log, true);
+  solve(an, log);
   return an;
 }
 }  // namespace
@@ -122,7 +123,7 @@ TEST_SUITE("stress") {
     Analysis an = s->setupGrid(P);
     RunLog log;
     try {
-      loadStep(an, 1, log, true);
+      solve(an, log);
       FAIL("no failure reported");
     } catch (const NewtonFailure& e) {
       CHECK(std::string(e.what()).find("singular") != std::string::npos);
@@ -168,7 +169,7 @@ TEST_SUITE("stress") {
         Analysis an = s->setupGrid(P);
         RunLog log;
         try {  // 1 point per cell may empty a cell: then a clean, named stop is the answer
-          for (int l = 1; l <= an.lstps; ++l) loadStep(an, l, log, true);
+          solve(an, log);
         } catch (const NewtonFailure& f) {
           CHECK(mp == 1);
           CHECK(std::string(f.what()).find("singular") != std::string::npos);

@@ -7,6 +7,7 @@
 #include "ample/elemMPinfo.h"
 #include "ample/formCoord2D.h"
 #include "ample/updateDomain.h"
+#include "ample/tensorOps.h"
 #include "ample/updateMPs.h"
 #include <doctest/doctest.h>
 #include <cmath>

@@ -3,6 +3,7 @@
 // F), so only updateMPs itself is exercised; domains use the default
 // DomainUpdate::Uii (eq 34). The other domain updates: tests/test_updateDomain.cpp.
 #include "ample/formCoord2D.h"
+#include "ample/tensorOps.h"
 #include "ample/updateMPs.h"
 #include <doctest/doctest.h>
 #include <Eigen/Eigenvalues>

@@ -1,0 +1,39 @@
+//--------------------------------------------------------------------------
+// analysis.h — one problem as the main loop sees it: mesh, points, settings
+//--------------------------------------------------------------------------
+// Seed 002 sec 4: what setupGrid returns (the mesh and mpData of tables 3-4,
+// the load steps, gravity and the Newton-Raphson settings), with the
+// formulation and domain update of seed 000, the two remedies (off by
+// default) and a setup's optional hooks at the start and end of a load step.
+// Data only: the bottom layer with mpData.h (docs/structure.md).
+//--------------------------------------------------------------------------
+#pragma once
+#include "mpData.h"
+#include <functional>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace ample {
+
+struct Analysis {
+  std::string name;                   // the setup's name (progress lines)
+  Mesh mesh;                          // background grid with boundary conditions
+  std::vector<MaterialPoint> mpData;  // material points
+  int lstps = 1;                      // number of load steps
+  double g = 0;                       // gravitational acceleration (m/s2), acting in -y
+  double tol = 1e-9;                  // Newton-Raphson tolerance on fErr (eq 35)
+  int NRitMax = 10;                   // most Newton-Raphson passes per load step
+  int substeps = 0;                   // halvings of a failed load step allowed (0: none)
+  double ghost = 0;                   // ghost-penalty factor of the edge cells (0: none)
+  Formulation formulation = Formulation::UL;        // frame of equilibrium (seed 000)
+  DomainUpdate domainUpdate = DomainUpdate::Uii;    // GIMP domain update (seed 002 eq 34)
+  Eigen::VectorXd frct;                             // reactions of the last converged step
+  // optional work of a setup at the start / end of each load step (nullptr: none),
+  // e.g. a grid that follows the body, boundary cells that change, a reaction history
+  std::function<void(Analysis& an, int lstp)> beforeStep, afterStep;
+  std::vector<int> tagged;                          // points a setup marks for its hooks
+  std::vector<std::vector<std::pair<std::string, double>>> history;  // rows for history.csv
+};
+
+}  // namespace ample

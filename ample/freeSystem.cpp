@@ -1,0 +1,34 @@
+//--------------------------------------------------------------------------
+// freeSystem — Kt(fd,fd) of one load step, its pattern and its symbolic analysis
+//--------------------------------------------------------------------------
+// See freeSystem.h for what it saves, inputs and outputs.
+//--------------------------------------------------------------------------
+#include "freeSystem.h"
+
+namespace ample {
+
+void buildFreeSystem(const SpMat& Kt, const std::vector<int>& fd, FreeSystem& S) {
+  const int nfd = int(fd.size());
+  std::vector<int> freeIdx(Kt.rows(), -1);              // global dof -> row of Kt(fd,fd)
+  for (int r = 0; r < nfd; ++r) freeIdx[fd[r]] = r;
+  std::vector<Eigen::Triplet<double>> trip;             // value = position of the entry in Kt
+  for (int c = 0; c < Kt.outerSize(); ++c)
+    if (freeIdx[c] >= 0)
+      for (int e = Kt.outerIndexPtr()[c]; e < Kt.outerIndexPtr()[c + 1]; ++e)
+        if (freeIdx[Kt.innerIndexPtr()[e]] >= 0)
+          trip.emplace_back(freeIdx[Kt.innerIndexPtr()[e]], freeIdx[c], double(e));
+  S.Kff = SpMat(nfd, nfd);
+  S.Kff.setFromTriplets(trip.begin(), trip.end());      // no duplicates: each value is one e
+  S.fromKt.resize(S.Kff.nonZeros());
+  for (int e = 0; e < S.Kff.nonZeros(); ++e) S.fromKt[e] = int(S.Kff.valuePtr()[e]);
+  S.solver.analyzePattern(S.Kff);                       // symbolic analysis, once per pattern
+  S.fd = fd;
+  S.ktNonZeros = Kt.nonZeros();
+}
+
+void refillFreeSystem(const SpMat& Kt, const std::vector<int>& fd, FreeSystem& S) {
+  if (S.fd != fd || S.ktNonZeros != Kt.nonZeros()) buildFreeSystem(Kt, fd, S);
+  for (int e = 0; e < S.Kff.nonZeros(); ++e) S.Kff.valuePtr()[e] = Kt.valuePtr()[S.fromKt[e]];
+}
+
+}  // namespace ample
