@@ -1,0 +1,60 @@
+#!/usr/bin/env bash
+# check_layers.sh — the includes of the project run one way (docs/structure.md)
+#
+# Layers, bottom to top; a file may include files of its own layer or below:
+#   0 data          ample/mpData.h ample/errors.h ample/analysis.h
+#   0 constitutive  constitutive/*  (Eigen and the standard library only)
+#   1 analysis      ample/* (basis, point loop, solver, updates, remedies)
+#   2 setups        setups/*
+#   3 output        plotting/*
+#   4 loop          ample/ample.h ample/ample.cpp
+#   5 program       ample/main.cpp ample/cli.h ample/cli.cpp
+# and no two modules (a .h/.cpp pair) include each other, directly or round a
+# cycle (checked with tsort over the module graph). Prints every offending
+# include; exit 0 when there is none, 1 otherwise.
+#   tools/check_layers.sh            (from the top of the tree)
+set -uo pipefail
+cd "$(dirname "$0")/.."
+
+layer() {  # layer of a project file, -1 for one outside the layered tree
+  case "$1" in
+    ample/mpData.h|ample/errors.h|ample/analysis.h|constitutive/*) echo 0 ;;
+    ample/ample.h|ample/ample.cpp) echo 4 ;;
+    ample/main.cpp|ample/cli.h|ample/cli.cpp) echo 5 ;;
+    ample/*) echo 1 ;;
+    setups/*) echo 2 ;;
+    plotting/*) echo 3 ;;
+    *) echo -1 ;;
+  esac
+}
+
+bad=0
+edges=$(mktemp)
+trap 'rm -f "$edges"' EXIT
+for f in ample/* constitutive/* setups/* plotting/*; do
+  case "$f" in *.h|*.cpp) ;; *) continue ;; esac
+  lf=$(layer "$f")
+  while IFS= read -r inc; do
+    [ -z "$inc" ] && continue
+    # resolve "x.h" next to the file, else from the top of the tree
+    if [ -e "$(dirname "$f")/$inc" ]; then t="$(dirname "$f")/$inc"; else t="$inc"; fi
+    t=$(realpath --relative-to=. "$t")
+    lt=$(layer "$t")
+    if [ "$lt" -lt 0 ]; then echo "$f includes $inc, which is not in the tree"; bad=1; continue; fi
+    if [ "$lt" -gt "$lf" ]; then
+      echo "$f (layer $lf) includes $t (layer $lt): an include up a layer"; bad=1
+    fi
+    case "$f" in constitutive/*)
+      case "$t" in constitutive/*) ;; *) echo "$f includes $t: constitutive/ must stand alone"; bad=1 ;; esac
+    esac
+    mf=${f%.*}; mt=${t%.*}
+    [ "$mf" != "$mt" ] && echo "$mt $mf" >> "$edges"
+  done < <(sed -n 's/^#include "\(.*\)".*/\1/p' "$f")
+done
+if ! tsort "$edges" > /dev/null 2> "$edges.err"; then
+  echo "include cycle between modules:"; grep -v 'input contains a loop' "$edges.err" | sed 's/^tsort: /  /'
+  bad=1
+fi
+rm -f "$edges.err"
+[ $bad -eq 0 ] && echo "layers: every include runs down a layer or within one; no include cycle"
+exit $bad
