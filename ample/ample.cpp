@@ -81,7 +81,7 @@ void solve(Analysis& an, RunLog& log, const RunOptions& opt) {
     timed(T.elemMPinfo, elemMPinfo, mesh, mpData);                   // basis functions
     const Eigen::VectorXd fext = timed(T.detExtForce, detExtForce, nDoF, an.g, mpData) * inc.lf1;
     const std::vector<BC> bc = scaled(mesh.bc, inc.bcScale(an.lstps));  // increments of this step
-    const std::vector<int> fd = timed(T.detFDoFs, detFDoFs, mesh);
+    const std::vector<int> fd = timed(T.detFDoFs, detFDoFs, mesh, mpData);
     Eigen::VectorXd uvw = Eigen::VectorXd::Zero(nDoF), frct = uvw, oobf = fext;
     DetMPsOut mps{uvw, timed(T.detMPs, stiffnessPattern, nDoF, mpData)};  // Kt's sparsity, once
     FreeSystem Kff;                                                  // Kt(fd,fd), analysed once

@@ -1,23 +1,79 @@
 //--------------------------------------------------------------------------
 // detFDoFs — free degrees of freedom of the background grid
 //--------------------------------------------------------------------------
-// See detFDoFs.h for inputs and outputs.
+// See detFDoFs.h for the rules, inputs and outputs.
 //--------------------------------------------------------------------------
 #include "detFDoFs.h"
+#include "MPMbasis.h"
+#include "domainCorners.h"
+#include <cmath>
 
 namespace ample {
 
-std::vector<int> detFDoFs(const Mesh& mesh) {
-  std::vector<char> isFree(mesh.nDoF(), 0);
-  for (int e = 0; e < mesh.nels(); ++e)
-    if (mesh.eInA[e])
-      for (int a = 0; a < nen; ++a)
-        for (int i = 0; i < nD; ++i) isFree[dof(mesh.etpl(e, a), i)] = 1;
+static std::vector<int> listFree(std::vector<char>& isFree, const Mesh& mesh) {
   for (const BC& c : mesh.bc) isFree[c.dof] = 0;
   std::vector<int> fd;
   for (int d = 0; d < mesh.nDoF(); ++d)
     if (isFree[d]) fd.push_back(d);
   return fd;
+}
+
+std::vector<int> activeCellDoFs(const Mesh& mesh) {
+  std::vector<char> isFree(mesh.nDoF(), 0);
+  for (int e = 0; e < mesh.nels(); ++e)
+    if (mesh.eInA[e])
+      for (int a = 0; a < nen; ++a)
+        for (int i = 0; i < nD; ++i) isFree[dof(mesh.etpl(e, a), i)] = 1;
+  return listFree(isFree, mesh);
+}
+
+// the only domain corner of a CPDI point at which the grid basis of `node` is
+// non-zero, or -1 (none, or more than one)
+static int singleCorner(const Mesh& mesh, const Corners& x, int node) {
+  int only = -1;
+  for (int c = 0; c < 4; ++c)
+    if (gridBasis(mesh, node, x.col(c)) != 0.0) {
+      if (only >= 0) return -1;
+      only = c;
+    }
+  return only;
+}
+
+std::vector<int> detFDoFs(const Mesh& mesh, const std::vector<MaterialPoint>& mpData) {
+  std::vector<int> links(mesh.nodes(), 0);  // points linked to each node
+  for (const MaterialPoint& mp : mpData)
+    for (int v = 0; v < mp.nn; ++v) links[mp.nIN[v]]++;
+  std::vector<char> isFree(mesh.nDoF(), 0);
+  for (int n = 0; n < mesh.nodes(); ++n)
+    if (links[n] > 0)
+      for (int i = 0; i < nD; ++i) isFree[dof(n, i)] = 1;
+  for (const BC& c : mesh.bc) isFree[c.dof] = 0;
+
+  for (const MaterialPoint& mp : mpData) {  // nodes only one CPDI corner reaches
+    if (!isCPDI(mp)) continue;
+    const Corners x = domainCorners(mp);
+    int keep[4][nD];                        // per corner and direction: the free dof kept
+    for (auto& k : keep) k[0] = k[1] = -1;
+    for (int v = 0; v < mp.nn; ++v) {
+      const int n = mp.nIN[v];
+      if (links[n] != 1) continue;
+      const int c = singleCorner(mesh, x, n);
+      if (c < 0) continue;
+      for (int i = 0; i < nD; ++i) {
+        const int d = dof(n, i);
+        if (!isFree[d]) continue;
+        int& k = keep[c][i];
+        if (k < 0) { k = v; continue; }
+        if (std::abs(mp.Svp[v]) > std::abs(mp.Svp[k])) {  // keep the largest basis value
+          isFree[dof(mp.nIN[k], i)] = 0;
+          k = v;
+        } else {
+          isFree[d] = 0;
+        }
+      }
+    }
+  }
+  return listFree(isFree, mesh);
 }
 
 }  // namespace ample

@@ -1,10 +1,25 @@
 //--------------------------------------------------------------------------
 // detFDoFs — free degrees of freedom of the background grid
 //--------------------------------------------------------------------------
-// Seed 002 sec 4 and sec 5.3: the degrees of freedom of the nodes of active
-// cells (eInA, cells linked to a point) less those with a Dirichlet
-// condition. Nodes that no point supports are eliminated this way.
-// Inputs:  mesh (etpl, eInA, bc, nodes)
+// Seed 002 sec 4 and sec 5.3: the degrees of freedom of the nodes that carry
+// stiffness less those with a Dirichlet condition; nodes that no point
+// supports are eliminated. Seed 002 takes the nodes of the active cells (eInA,
+// cells linked to a point): activeCellDoFs. detFDoFs, which the analysis
+// uses, takes the nodes linked to a point
+// (nIN: for GIMP/MPM the same set; a CPDI point does not link a node whose
+// basis value and gradient are zero there, see elemMPinfo) and then removes
+// the redundant dofs of nodes reached through one CPDI corner only:
+//   a node linked to one point p only, with the grid basis N_v non-zero at
+//   one corner c of p only, has S_v = w_c N_v(x_c) and dS_v = N_v(x_c) g_c
+//   (seed 001 sec 2 (iv)), so the displacements u_v of all such nodes of
+//   (p, c) enter the point's dF, position and forces only through
+//   sum_v N_v(x_c) u_v. With two or more of them free in a direction the
+//   stiffness is singular (a corner poking into an empty cell). Per (p, c)
+//   and direction one free dof is kept (the node with the largest S_v); the
+//   others are left out of the system, which changes no point quantity: the
+//   residual of each is N_v(x_c) times that of the kept one, zero at
+//   convergence.
+// Inputs:  mesh (etpl, eInA, bc, nodes, coord, h) · [mpData (nIN, nn, Svp, corners)]
 // Outputs: fd (ascending list of free degrees of freedom)
 // Tests:   tests/test_detFDoFs.cpp
 //--------------------------------------------------------------------------
@@ -13,6 +28,7 @@
 
 namespace ample {
 
-std::vector<int> detFDoFs(const Mesh& mesh);
+std::vector<int> detFDoFs(const Mesh& mesh, const std::vector<MaterialPoint>& mpData);  // linked nodes
+std::vector<int> activeCellDoFs(const Mesh& mesh);  // seed 002's rule: nodes of active cells
 
 }  // namespace ample

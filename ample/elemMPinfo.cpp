@@ -31,6 +31,29 @@ static int cellsOfCorners(const Mesh& mesh, const MaterialPoint& mp, std::array<
   return ne;
 }
 
+// drop the nodes whose basis value and gradient at the point are both exactly zero:
+// they carry no mass, force or stiffness from it, and linked they would put a dof
+// with an empty stiffness column into the system. This happens to CPDI points
+// whose corner lies on the far edge of its cell (e.g. a corner on the base, y = 0:
+// N = 0 there for the nodes of the cell's upper edge, seed 001 sec 2 (iii));
+// GIMP/MPM cells are linked only when overlapped, so they lose no nodes.
+int dropNullNodes(MaterialPoint& mp) {
+  int k = 0;
+  for (int v = 0; v < mp.nn; ++v) {
+    if (mp.Svp[v] == 0.0 && mp.dSvp.col(v).isZero(0.0)) continue;
+    mp.nIN[k] = mp.nIN[v];
+    mp.Svp[k] = mp.Svp[v];
+    mp.dSvp.col(k) = mp.dSvp.col(v);
+    ++k;
+  }
+  for (int v = k; v < mp.nn; ++v) {
+    mp.nIN[v] = 0;
+    mp.Svp[v] = 0.0;
+    mp.dSvp.col(v).setZero();
+  }
+  return mp.nn = k;
+}
+
 void elemMPinfo(Mesh& mesh, std::vector<MaterialPoint>& mpData) {
   mesh.eInA.assign(mesh.nels(), 0);
   for (size_t p = 0; p < mpData.size(); ++p) {
@@ -43,6 +66,7 @@ void elemMPinfo(Mesh& mesh, std::vector<MaterialPoint>& mpData) {
     }
     mp.nn = nodesForMP(mesh, mp.eIN, mp.ne, mp.nIN);
     MPMbasis(mesh, mp);
+    dropNullNodes(mp);
     for (int e = 0; e < mp.ne; ++e) mesh.eInA[mp.eIN[e]] = 1;
   }
 }

@@ -5,7 +5,8 @@
 // the positions and domains at the start of the step (X~); marks the active
 // cells (those linked to any point) for detFDoFs. GIMP/MPM points take the
 // cells their domain overlaps (elemForMP); CPDI points the cells holding their
-// four domain corners (seed 001 sec 2 (iii)).
+// four domain corners (seed 001 sec 2 (iii)). A node of those cells whose basis
+// value and gradient are both zero at the point is not linked (dropNullNodes).
 // Inputs:  mesh · mpData (mpC, lp, mpType)
 // Outputs: mpData (eIN, ne, nIN, nn, Svp, dSvp) · mesh.eInA (nels)
 // Tests:   tests/test_basis.cpp
@@ -16,5 +17,6 @@
 namespace ample {
 
 void elemMPinfo(Mesh& mesh, std::vector<MaterialPoint>& mpData);
+int dropNullNodes(MaterialPoint& mp);  // unlink nodes with S = 0 and dS = 0; returns the new nn
 
 }  // namespace ample

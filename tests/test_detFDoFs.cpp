@@ -1,8 +1,14 @@
 // Tests of detFDoFs (seed 002 sec 4, sec 5.3): the free degrees of freedom are
 // those of the nodes of active cells, less the constrained ones, ascending.
+// With the points (the analysis): the nodes linked to a point, less the redundant
+// dofs of nodes that only one CPDI corner reaches (issue 10 item 3), and the
+// elemMPinfo rule that a node with zero basis value and gradient is not linked.
 #include "ample/detFDoFs.h"
+#include "ample/detMPs.h"
 #include "ample/formCoord2D.h"
+#include "testProblems.h"
 #include <doctest/doctest.h>
+#include <Eigen/LU>
 #include <algorithm>
 
 using namespace ample;
@@ -13,7 +19,7 @@ TEST_SUITE("detFDoFs") {
     mesh.eInA.assign(mesh.nels(), 1);
     std::vector<int> all(12);
     for (int d = 0; d < 12; ++d) all[d] = d;
-    CHECK(detFDoFs(mesh) == all);
+    CHECK(activeCellDoFs(mesh) == all);
   }
   TEST_CASE("detFDoFs: only nodes of active cells / minus the bc dofs / ascending") {
     Mesh mesh = formCoord2D(4, 4, 4.0, 4.0);  // 5 nodes per row
@@ -23,17 +29,111 @@ TEST_SUITE("detFDoFs") {
     const std::vector<int> expected = {dof(6, 0),  dof(6, 1),  /* 7x held */ dof(7, 1),
                                        dof(8, 0),  dof(8, 1),  dof(11, 0), dof(11, 1),
                                        dof(12, 0), /* 12y held */ dof(13, 0), dof(13, 1)};
-    CHECK(detFDoFs(mesh) == expected);
+    CHECK(activeCellDoFs(mesh) == expected);
   }
   TEST_CASE("detFDoFs: separate active regions / shared nodes counted once") {
     Mesh mesh = formCoord2D(4, 4, 4.0, 4.0);
     mesh.eInA.assign(mesh.nels(), 0);
     mesh.eInA[0] = mesh.eInA[5] = mesh.eInA[15] = 1;  // cells 0 and 5 share node 6
-    const std::vector<int> fd = detFDoFs(mesh);
+    const std::vector<int> fd = activeCellDoFs(mesh);
     CHECK(fd.size() == 2 * (4 + 3 + 4));  // nodes 0 1 5 6 | 7 11 12 | 18 19 23 24
     CHECK(std::is_sorted(fd.begin(), fd.end()));
     CHECK(std::adjacent_find(fd.begin(), fd.end()) == fd.end());
     for (int n : {0, 1, 5, 6, 7, 11, 12, 18, 19, 23, 24})
       for (int i = 0; i < nD; ++i) CHECK(std::binary_search(fd.begin(), fd.end(), dof(n, i)));
+  }
+}
+
+namespace {
+bool linked(const MaterialPoint& mp, int node) {
+  return std::find(mp.nIN.begin(), mp.nIN.begin() + mp.nn, node) != mp.nIN.begin() + mp.nn;
+}
+bool has(const std::vector<int>& fd, int d) { return std::binary_search(fd.begin(), fd.end(), d); }
+
+// rank of Kt(fd, fd), dense
+int rankOf(const SpMat& Kt, const std::vector<int>& fd) {
+  const Eigen::MatrixXd K = Eigen::MatrixXd(Kt);
+  Eigen::MatrixXd Kf(fd.size(), fd.size());
+  for (size_t i = 0; i < fd.size(); ++i)
+    for (size_t j = 0; j < fd.size(); ++j) Kf(i, j) = K(fd[i], fd[j]);
+  Eigen::FullPivLU<Eigen::MatrixXd> lu(Kf);
+  lu.setThreshold(1e-10);
+  return int(lu.rank());
+}
+}  // namespace
+
+TEST_SUITE("elemMPinfo") {
+  TEST_CASE("elemMPinfo: a CPDI corner on the far edge of its cell does not link the nodes with zero basis there") {
+    // the collapse toe: a CPDI2 point on the base (y = 0) whose lower-right corner
+    // (2.1, 0) is the only corner in cell 2 = [2,3] x [0,1]; node 8 at (3, 1) has
+    // N = 0.1 x 0 = 0 there, so S = 0 and dS = 0: linked, it was an empty column
+    Mesh mesh = formCoord2D(4, 4, 4.0, 4.0);  // 5 nodes per row
+    for (MpType t : {MpType::CPDI2, MpType::CPDI1}) {
+      CAPTURE(int(t));
+      std::vector<MaterialPoint> mpData(1);
+      MaterialPoint& mp = mpData[0];
+      mp.mpType = t;
+      mp.xc << 1.2, 2.1, 1.9, 1.0,   // x of the corners, anticlockwise from lower left
+               0.0, 0.0, 0.6, 0.6;   // y
+      if (t == MpType::CPDI1) {      // a parallelogram with the same lower edge
+        mp.st << 0.9, -0.2, 0.0, 0.6;  // columns s, t
+        mp.mpC = Vector2d(1.55, 0.3);
+      } else {
+        mp.mpC = mp.xc.rowwise().mean();
+      }
+      elemMPinfo(mesh, mpData);
+      CHECK(mp.ne == 2);             // cells 1 and 2
+      CHECK(linked(mp, 3));          // (3, 0): N = 0.1 at the corner
+      CHECK_FALSE(linked(mp, 8));    // (3, 1): N = 0 at every corner
+      double S = 0;
+      for (int v = 0; v < mp.nn; ++v) {
+        CHECK((mp.Svp[v] != 0.0 || !mp.dSvp.col(v).isZero(0.0)));
+        S += mp.Svp[v];
+      }
+      CHECK(std::abs(S - 1.0) <= 1e-13);  // the dropped node carried nothing
+      CHECK(has(detFDoFs(mesh, mpData), dof(3, 0)));
+      CHECK_FALSE(has(detFDoFs(mesh, mpData), dof(8, 0)));  // cell 2 is active, node 8 not free
+      CHECK(has(activeCellDoFs(mesh), dof(8, 0)));          // the active-cell rule keeps it
+    }
+  }
+}
+
+TEST_SUITE("detFDoFs") {
+  TEST_CASE("detFDoFs: nodes that one CPDI corner alone reaches keep one free dof per direction") {
+    // a block of 2 x 2 CPDI points per cell in cells [1,3) x [1,3), rollers on
+    // y = 1; the top-right point's domain gets the corners (2.3, 2.2) (3, 2.5)
+    // (3.2, 3.3) (2.5, 3), a parallelogram: only corner 2 enters the empty cell 15 =
+    // [3,4] x [3,4], so nodes (4,3), (4,4), (3,4) are linked through it alone, their
+    // gradients are parallel and Kt over all linked dofs has 4 zero-energy modes
+    for (MpType t : {MpType::CPDI2, MpType::CPDI1}) {
+      CAPTURE(int(t));
+      Analysis an = testing::smallBlock(t, CmType::Elastic, 2);
+      size_t top = 0;
+      for (size_t p = 0; p < an.mpData.size(); ++p)
+        if ((an.mpData[p].mpC - Vector2d(2.75, 2.75)).norm() < 1e-12) top = p;
+      MaterialPoint& mp = an.mpData[top];
+      REQUIRE((mp.mpC - Vector2d(2.75, 2.75)).norm() < 1e-12);
+      mp.xc << 2.3, 3.0, 3.2, 2.5,
+               2.2, 2.5, 3.3, 3.0;
+      mp.st << 0.7, 0.2,   // columns s = x1 - x0, t = x3 - x0; centre (2.75, 2.75)
+               0.3, 0.8;
+      for (int n = 0; n < an.mesh.nodes(); ++n)
+        if (std::abs(an.mesh.coord(n, 1) - 1.0) < 1e-12)
+          for (int i = 0; i < nD; ++i) an.mesh.bc.push_back({dof(n, i), 0.0});
+      elemMPinfo(an.mesh, an.mpData);
+      const int n43 = 3 * 5 + 4, n44 = 4 * 5 + 4, n34 = 4 * 5 + 3;  // nodes (4,3) (4,4) (3,4)
+      for (int n : {n43, n44, n34}) CHECK(linked(mp, n));
+      const std::vector<int> fd = detFDoFs(an.mesh, an.mpData), fdAll = activeCellDoFs(an.mesh);
+      int lonelyFree = 0;
+      for (int n : {n43, n44, n34})
+        for (int i = 0; i < nD; ++i) lonelyFree += has(fd, dof(n, i));
+      CHECK(lonelyFree == 2);                   // one node kept, x and y:
+      CHECK(has(fd, dof(n34, 0)));              // the largest basis value, N = 0.8 x 0.3
+      CHECK(has(fd, dof(n34, 1)));
+      CHECK(fd.size() == fdAll.size() - 4);
+      const SpMat Kt = detMPs(Eigen::VectorXd::Zero(an.mesh.nDoF()), an.mpData, Formulation::UL).Kt;
+      CHECK(rankOf(Kt, fd) == int(fd.size()));            // non-singular
+      CHECK(rankOf(Kt, fdAll) == int(fdAll.size()) - 4);  // the active-cell rule: singular
+    }
   }
 }

@@ -210,3 +210,73 @@ TEST_SUITE("robustness") {
     }
   }
 }
+
+namespace {
+// run a setup to the end; the message of the failure, or "" when every step converged
+std::string tryAll(const std::string& name, const std::vector<std::pair<std::string, double>>& set,
+                   Analysis& an) {
+  const Setup* s = findSetup(name);
+  Params P = s->params();
+  for (const auto& kv : set) setDefault(P, kv.first, kv.second);
+  an = s->setupGrid(P);
+  RunLog log;
+  try {
+    for (int l = 1; l <= an.lstps; ++l) loadStep(an, l, log, true);
+  } catch (const RunError& e) {
+    return e.what();
+  }
+  return "";
+}
+}  // namespace
+
+TEST_SUITE("stress") {
+  // issue 10 item 3: a CPDI corner entering an empty cell, alone, linked nodes with a
+  // zero column (corner on the far cell edge) or two or more nodes whose gradients
+  // are parallel (a null mode): "structurally singular" / "singular" stops before.
+  // Asserted: every load step converges, stresses finite, and extent / height within
+  // 0.5 % / 2.5 % (h = 1 m) or 3 % / 5 % (h = 2 m and 0.5 m) of seed 002 table 5,
+  // 13.781 / 6.194 (GIMP h = 1 m 3 x 3; CPDI heights, from the domain bounding box,
+  // are 0.05-0.1 m above GIMP's). Not here: CPDI1 at h = 2 m with 2 x 2 and 3 x 3
+  // points, which does not converge in step 37 / 40 (a weakly reached node on the
+  // top of the grid, see issue 10), with or without sub-division.
+  TEST_CASE("stress: CPDI1 and CPDI2 collapses at h = 2 / 1 / 0.5 m complete near seed 002 table 5") {
+    struct Case { MpType t; int a, mp; };
+    const Case cases[] = {{MpType::CPDI2, 1, 3}, {MpType::CPDI2, 2, 2}, {MpType::CPDI2, 2, 3},
+                          {MpType::CPDI2, 2, 4}, {MpType::CPDI2, 4, 6}, {MpType::CPDI1, 1, 4},
+                          {MpType::CPDI1, 1, 5}, {MpType::CPDI1, 2, 2}, {MpType::CPDI1, 4, 6}};
+    const Params P = findSetup("collapse")->params();
+    for (const Case& c : cases) {
+      CAPTURE(int(c.t));
+      CAPTURE(c.a);
+      CAPTURE(c.mp);
+      Analysis an;
+      const std::string msg =
+          tryAll("collapse", {{"mpType", int(c.t)}, {"a", c.a}, {"mp", c.mp}, {"substeps", 0}}, an);
+      CHECK_MESSAGE(msg.empty(), msg);
+      for (const MaterialPoint& p : an.mpData) REQUIRE(p.sig.allFinite());
+      const Results r = findSetup("collapse")->results(an, P);
+      const double tolX = (c.a == 2) ? 0.005 : 0.03, tolY = (c.a == 2) ? 0.025 : 0.05;
+      CHECK(std::abs(r[0].second / 13.781 - 1.0) < tolX);  // extent
+      CHECK(std::abs(r[1].second / 6.194 - 1.0) < tolY);   // height
+    }
+  }
+
+  // the beam with 3 x 3 CPDI points stopped in step 3 (CPDI2 h = 0.25 m), 5 (CPDI2
+  // h = 0.125 m) and 14 (CPDI1 h = 0.25 m) for the same reason. Asserted: all 50
+  // steps converge and the tip displacement is within 1.5 % of the 6 x 6 GIMP beam
+  // at h = 0.25 m (`ample beam`: tip_u = -5.5548 m, tip_v = -8.2574 m)
+  TEST_CASE("stress: CPDI beams with 3 x 3 points at h = 0.25 and 0.125 m complete near the 6 x 6 GIMP tip") {
+    struct Case { MpType t; int a; };
+    const Params P = findSetup("beam")->params();
+    for (const Case& c : {Case{MpType::CPDI2, 2}, Case{MpType::CPDI1, 2}, Case{MpType::CPDI2, 4}}) {
+      CAPTURE(int(c.t));
+      CAPTURE(c.a);
+      Analysis an;
+      const std::string msg = tryAll("beam", {{"mpType", int(c.t)}, {"a", c.a}, {"mp", 3}}, an);
+      CHECK_MESSAGE(msg.empty(), msg);
+      const Results r = findSetup("beam")->results(an, P);
+      CHECK(std::abs(r[0].second / -5.5548 - 1.0) < 0.015);
+      CHECK(std::abs(r[1].second / -8.2574 - 1.0) < 0.015);
+    }
+  }
+}
