@@ -12,9 +12,10 @@
 //     postPro
 // A step that ends with fErr > tol (or a NaN, or a singular stiffness) stops the
 // run (exit 1): the state of the last converged step is kept and written, the
-// failure is named on stderr. Two remedies, off by default, each one line:
-// loadSteps.subdivide (substeps > 0: retry a failed step in halves) and
-// addGhostPenalty (ghost > 0). Every timed call goes through timed(seconds, f,
+// failure is named on stderr. Two remedies, off by default: loadSteps.retry is
+// the one line of both in the handler of a failed step (ghost > 0: retry it with
+// the ghost penalty, on from then; substeps > 0: retry it in halves), and
+// addGhostPenalty the one line that applies the penalty in the Newton loop. Every timed call goes through timed(seconds, f,
 // args...) (plotting/runLog.h), which is f(args...) with a stopwatch around it.
 // See ample.h for inputs and outputs.
 //--------------------------------------------------------------------------
@@ -103,7 +104,7 @@ void solve(Analysis& an, RunLog& log, const RunOptions& opt) {
       checkConverged(an, lstp, NRit, fErr);                          // throws when fErr > tol
     } catch (const RunError& e) {                                    // no convergence, NaN, singular
       recordStep(log, inc, NRit, fErr, false);
-      loadSteps.subdivide(inc, e, mpData, opt.quiet);                // remedy (off: rethrows e)
+      loadSteps.retry(inc, e, an, opt.quiet);                        // remedies (off: rethrows e)
       continue;
     }
     recordStep(log, inc, NRit, fErr, true);
@@ -152,8 +153,9 @@ static std::vector<BC> scaled(std::vector<BC> bc, double factor) {
 }
 
 // remedy: the ghost penalty of the edge cells of this step, empty when ghost = 0
+// or before the first load step that failed without it (an.ghostFrom)
 static SpMat ghostPenaltyOf(const Analysis& an) {
-  if (!(an.ghost > 0)) return SpMat();
+  if (!(an.ghost > 0) || an.ghostFrom == 0) return SpMat();
   double E = 0.0;                                                 // the stiffest point's E
   for (const MaterialPoint& mp : an.mpData) E = std::max(E, mp.mCst(0));
   return ghostPenalty(an.mesh, an.ghost, E);

@@ -26,6 +26,7 @@ struct Analysis {
   int NRitMax = 10;                   // most Newton-Raphson passes per load step
   int substeps = 0;                   // halvings of a failed load step allowed (0: none)
   double ghost = 0;                   // ghost-penalty factor of the edge cells (0: none)
+  int ghostFrom = 0;                  // first load step the penalty was needed (0: not yet)
   Formulation formulation = Formulation::UL;        // frame of equilibrium (seed 000)
   DomainUpdate domainUpdate = DomainUpdate::Uii;    // GIMP domain update (seed 002 eq 34)
   Eigen::VectorXd frct;                             // reactions of the last converged step

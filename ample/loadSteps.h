@@ -1,20 +1,27 @@
 //--------------------------------------------------------------------------
-// loadSteps — the load steps of a run, and the remedy that halves a failed one
+// loadSteps — the load steps of a run, and the remedies that retry a failed one
 //--------------------------------------------------------------------------
 // Seed 002 sec 3.2: the load is applied in lstps equal steps; step lstp runs
 // from the load factor (lstp-1)/lstps to lstp/lstps. With substeps = 0 (the
 // paper's algorithm, the default) next() hands out exactly these steps and
-// subdivide() rethrows the failure, which stops the run.
-// Remedy (substeps > 0): a step whose Newton-Raphson loop failed is restored
-// to the converged state (restoreConverged) and replaced by its two halves,
-// each of which may be halved again, up to substeps times.
-// Inputs:  lstps · substeps | the failed increment and its error · mpData
+// retry() rethrows a failure, which stops the run.
+// retry() is the one call of both remedies when a step fails; each restores the
+// converged state (restoreConverged) and queues the work again:
+//   ghost > 0 (first): the same increment with the ghost penalty, which stays
+//                      on from this load step to the end (an.ghostFrom);
+//   substeps > 0 (then): its two halves, each of which may be halved again,
+//                      up to substeps times.
+// With both off it rethrows the failure, which stops the run.
+// Inputs:  lstps · substeps | the failed increment and its error · an (ghost,
+//          ghostFrom, mpData)
 // Outputs: increments (lstp, load factors lf0 -> lf1, first/last part of the step)
 // Tests:   tests/test_robustness.cpp (large load steps)
 //--------------------------------------------------------------------------
 #pragma once
+#include "analysis.h"
 #include "errors.h"
 #include "mpData.h"
+#include <string>
 #include <vector>
 
 namespace ample {
@@ -25,6 +32,7 @@ struct Increment {
   int depth = 0;                // halvings so far (0: the whole step)
   bool first = true;            // the first attempt at its load step (not a half)
   bool last = true;             // it ends its load step
+  std::string withoutGhost;     // the failure without the ghost penalty, if retried with it
   // scale of the prescribed displacement increments (1 for a whole step)
   double bcScale(int lstps) const { return (lf1 - lf0) * lstps; }
 };
@@ -33,10 +41,9 @@ class LoadSteps {
  public:
   LoadSteps(int lstps, int substeps);
   bool next(Increment& inc);    // the next increment to solve; false after the last
-  // remedy: restore the converged state and queue the two halves of inc, or,
-  // when inc may not be halved again (depth = substeps), rethrow e
-  void subdivide(const Increment& inc, const RunError& e, std::vector<MaterialPoint>& mpData,
-                 bool quiet);
+  // remedies: restore the converged state and queue inc again with the ghost
+  // penalty, or its two halves; when neither is allowed, throw e (NewtonFailure)
+  void retry(const Increment& inc, const RunError& e, Analysis& an, bool quiet);
 
  private:
   int lstps_, substeps_, lstp_ = 0;

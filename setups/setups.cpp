@@ -70,7 +70,8 @@ Params commonParams(int lstps) {
       Param("substeps", 0).integer(0, 30)
           .help("remedy: halvings of a load step allowed when Newton fails (0 = the paper's algorithm)"),
       Param("ghost", 0).range(0, 1e3)
-          .help("remedy: ghost-penalty factor gamma on the faces of the edge cells (0 = off, the paper's)"),
+          .help("remedy: ghost-penalty factor gamma on the faces of the edge cells, on from the "
+                "first load step that fails without it (0 = off, the paper's)"),
       Param("mpType", 2).choice(1, {"MPM", "GIMP", "CPDI1", "CPDI2"}).help("material point type"),
       Param("mp", 2).integer(1, 20).help("material points per cell in each direction"),
       Param("cmType", 1).choice(1, {"elastic", "VM"}).help("constitutive model"),
