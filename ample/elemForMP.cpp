@@ -31,9 +31,12 @@ int elemForMP(const Mesh& mesh, const Vector2d& mpC, const Vector2d& lp,
       first[i] = int(std::floor(lo + tol));
       last[i] = std::max(first[i], int(std::ceil(hi - tol)) - 1);
     } else {  // MPM: the cell with X_k < x <= X_k+1, the intervals SvpMPM uses (eq 23)
+      // within t = 1e-9 h of a grid line the point is on it (SvpMPM uses the same t)
       int k = std::clamp(int(std::floor(c)), 0, nels[i] - 1);
       const int stride = (i == 0) ? 1 : mesh.nelsx + 1;  // node k on the grid line
-      if (mpC(i) <= mesh.coord(k * stride, i) && k > 0) k--;
+      const double t = tol * mesh.h(i);
+      if (mpC(i) <= mesh.coord(k * stride, i) + t && k > 0) k--;
+      else if (k < nels[i] - 1 && mpC(i) > mesh.coord((k + 1) * stride, i) + t) k++;
       first[i] = last[i] = k;
     }
     first[i] = std::clamp(first[i], 0, nels[i] - 1);  // a domain reaching past the grid

@@ -84,6 +84,16 @@ TEST_SUITE("SvpMPM") {
     CHECK(SvpMPM(0.6, h).S == 0.0);
     CHECK(SvpMPM(-0.6, h).dS == 0.0);
   }
+  TEST_CASE("SvpMPM: within round-off of a node the gradient is that of the point on the node") {
+    // the same side as elemForMP's cell: d = +-4e-16 both take the left branch (x <= X_v),
+    // and the node one cell to the left (d = h + 4e-16) keeps its gradient
+    CHECK(SvpMPM(4e-16, h).dS == 2.0);
+    CHECK(SvpMPM(-4e-16, h).dS == 2.0);
+    CHECK(SvpMPM(h + 4e-16, h).dS == -2.0);
+    CHECK(SvpMPM(-h + 4e-16, h).dS == 0.0);
+    CHECK(SvpMPM(1e-6, h).dS == -2.0);                  // really right of the node
+    CHECK(SvpMPM(4e-16, h).S == doctest::Approx(1.0));  // the value is continuous
+  }
 }
 
 TEST_SUITE("SvpGIMP") {
