@@ -75,6 +75,20 @@ Errors domainErrors(DomainUpdate method, const Mode& m) {
   return e;
 }
 
+// half lengths after one update by method from l0 = (0.1, 0.05) under x = F X (Fn = I)
+Vector2d handLengths(DomainUpdate method, const Eigen::Matrix2d& F) {
+  Mesh mesh = formCoord2D(4, 4, 4.0, 4.0);
+  std::vector<MaterialPoint> mpData{gimpPoint()};
+  mpData[0].lp0 = mpData[0].lp = Vector2d(0.1, 0.05);
+  mpData[0].vp0 = mpData[0].vp = 0.02;
+  elemMPinfo(mesh, mpData);  // nIN, nn for the corner method
+  MaterialPoint& mp = mpData[0];
+  mp.F = F3(F);
+  mp.Fn = Matrix3d::Identity();
+  updateDomain(mesh, homogeneousUvw(mesh, F), method, mp);
+  return mp.lp;
+}
+
 // check one row of table 2: expected[k] = true for a tick, false for a cross
 void checkRow(DomainUpdate method, const bool expected[4]) {
   const std::vector<Mode> ms = modes();
@@ -152,6 +166,55 @@ TEST_SUITE("updateDomain") {
     // dF = F2: |dF_ii| = (1, 1.3), det dF = 1.3, no volume correction needed
     CHECK((mp.lp - Vector2d(0.11, 0.09 * 1.3)).norm() <= tolOK);
     CHECK(std::abs(4 * mp.lp.prod() - (F2 * F1).determinant() * mp.vp0) <= tolOK);
+  }
+
+  // Hand calculations of every GIMP update: l0 = (0.1, 0.05), homogeneous fields.
+  // The expected half lengths are written out from the equations of seed 000 sec 6.4;
+  // nothing below calls the library to make them (no stretchTensor, no det).
+  TEST_CASE("updateDomain: hand calculation - pure stretch F = diag(1.2 0.9) for every method") {
+    Eigen::Matrix2d F;
+    F << 1.2, 0, 0, 0.9;
+    const double r = std::sqrt(1.08);  // det F = 1.2 * 0.9
+    CHECK((handLengths(DomainUpdate::None, F) - Vector2d(0.1, 0.05)).norm() <= tolOK);
+    CHECK((handLengths(DomainUpdate::DetF, F) - Vector2d(0.1 * r, 0.05 * r)).norm() <= tolOK);  // eq 32
+    // U = F for a stretch: Fii, Uii, the corner update (midpoints at 1.2 lx, 0.9 ly, no
+    // volume correction since 1.2 * 0.9 = det F) and both volume-corrected forms agree
+    for (DomainUpdate m : {DomainUpdate::Fii, DomainUpdate::Uii, DomainUpdate::Corner, DomainUpdate::FiiVol,
+                           DomainUpdate::FiiVolInc}) {
+      CAPTURE(int(m));
+      CHECK((handLengths(m, F) - Vector2d(0.12, 0.045)).norm() <= tolOK);
+    }
+  }
+  TEST_CASE("updateDomain: hand calculation - rotation by 30 deg for every method") {
+    const double c = std::sqrt(3.0) / 2.0, s = 0.5;  // cos 30, sin 30
+    Eigen::Matrix2d F;
+    F << c, -s, s, c;
+    for (DomainUpdate m : {DomainUpdate::None, DomainUpdate::DetF, DomainUpdate::Uii, DomainUpdate::FiiVol,
+                           DomainUpdate::FiiVolInc}) {
+      CAPTURE(int(m));  // det F = 1, U = I, eq 38: l0 c (1 / c^2)^(1/2) = l0
+      CHECK((handLengths(m, F) - Vector2d(0.1, 0.05)).norm() <= tolOK);
+    }
+    CHECK((handLengths(DomainUpdate::Fii, F) - Vector2d(0.1 * c, 0.05 * c)).norm() <= tolOK);  // eq 33
+    // eqs 35-37: edge midpoints (0, -ly), (lx, 0), (0, ly), (-lx, 0) rotate to
+    // (s ly, -c ly), (c lx, s lx), ...: half extents max(s ly, c lx) = c lx = 0.0866 and
+    // max(c ly, s lx) = s lx = 0.05; scaled by (lx ly / (c lx s lx))^(1/2) to the area
+    const double k = std::sqrt(0.1 * 0.05 / (c * 0.1 * s * 0.1));
+    CHECK((handLengths(DomainUpdate::Corner, F) - Vector2d(c * 0.1 * k, s * 0.1 * k)).norm() <= tolOK);
+  }
+  TEST_CASE("updateDomain: hand calculation - simple shear gamma = 3 for every method") {
+    Eigen::Matrix2d F;
+    F << 1, 3, 0, 1;
+    for (DomainUpdate m : {DomainUpdate::None, DomainUpdate::DetF, DomainUpdate::Fii, DomainUpdate::FiiVol,
+                           DomainUpdate::FiiVolInc}) {
+      CAPTURE(int(m));  // F11 = F22 = det F = 1
+      CHECK((handLengths(m, F) - Vector2d(0.1, 0.05)).norm() <= tolOK);
+    }
+    // eq 34: C = F'F = [1 3; 3 10], det C = 1, tr C = 11, so U = (C + I) / sqrt(11 + 2)
+    CHECK((handLengths(DomainUpdate::Uii, F) - Vector2d(0.1 * 2, 0.05 * 11) / std::sqrt(13.0)).norm() <= tolOK);
+    // eqs 35-37: midpoints (0, -ly) -> (-3 ly, -ly), (lx, 0) -> (lx, 0), ...: half extents
+    // max(lx, 3 ly) = 0.15 and ly = 0.05, scaled by (lx ly / (0.15 ly))^(1/2) = (2/3)^(1/2)
+    const double k = std::sqrt(2.0 / 3.0);
+    CHECK((handLengths(DomainUpdate::Corner, F) - Vector2d(0.15 * k, 0.05 * k)).norm() <= tolOK);
   }
 
   TEST_CASE("updateDomain: standard MPM points keep no domain") {
