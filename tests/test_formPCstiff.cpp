@@ -4,6 +4,8 @@
 // against central differences of the PC internal force. PC and UL describe the
 // same equilibrium in two frames, so their internal forces (and hence their
 // tangents) agree for the same increment.
+#include "ample/ample.h"
+#include "ample/detFDoFs.h"
 #include "ample/detMPs.h"
 #include "ample/formPCstiff.h"
 #include "ample/tensorOps.h"
@@ -11,6 +13,8 @@
 #include "constitutive/VMconst.h"
 #include "testProblems.h"
 #include <doctest/doctest.h>
+#include <Eigen/Eigenvalues>
+#include <algorithm>
 #include <cmath>
 
 using namespace ample;
@@ -57,6 +61,20 @@ PCState pcStress(const Matrix3d& dF, const Matrix3d& bEn, double Jn, CmType cm,
   s.tau = stressToTensor(out.Ksig);
   s.P = s.tau * dF.inverse().transpose() / Jn;
   return s;
+}
+
+// the standard-MPM beam at h = 0.5 m (issue 10 item 1) run to its end with formulation f
+Analysis mpmBeam(Formulation f, const std::vector<std::pair<std::string, double>>& set) {
+  const Setup* s = findSetup("beam");
+  Params P = s->params();
+  setDefault(P, "a", 1);
+  setDefault(P, "mpType", int(MpType::MPM));
+  setDefault(P, "formulation", int(f));
+  for (const auto& kv : set) setDefault(P, kv.first, kv.second);
+  Analysis an = s->setupGrid(P);
+  RunLog log;
+  for (int l = 1; l <= an.lstps; ++l) loadStep(an, l, log, true);
+  return an;
 }
 }  // namespace
 
@@ -170,5 +188,76 @@ TEST_SUITE("formPCstiff") {
     for (int p = 0; p < 4; ++p)
       for (int q = 0; q < 4; ++q)
         CHECK(std::abs(A4(p, q) - A9(3 * (p / 2) + p % 2, 3 * (q / 2) + q % 2)) <= 1e-10 * A9.norm());
+  }
+}
+
+// Issue 10 item 1: with standard MPM the 6x6 beam stops in load step 11 (h = 0.5 m) with PC
+// and in step 7 (h = 0.25 m) while UL completes. PC is not at fault: PC and UL give the same
+// fint and Kt at every iterate. In load step 11 (h = 0.5 m) a point at the free tip's corner
+// is the only point on two nodes of its cell; equilibrium of those two nodes makes its stress
+// zero, and any rotation of that stress-free point is then an equilibrium state too: Kt has a
+// zero eigenvalue (1e-17 of the largest). The Newton step along that mode is roundoff over
+// roundoff (0.02 m with UL, 7.4 m with PC from the same state in step 11), and a large one
+// costs more than NRitMax = 10 passes — for either formulation (from PC's state at h = 0.25 m
+// UL fails step 7 too). The ghost penalty removes the mode: then PC and UL agree to roundoff.
+TEST_SUITE("formPCstiff") {
+  TEST_CASE("formPCstiff: MPM beam step 11 / PC equals UL but Kt has the zero mode of a lone stress-free point") {
+    Params P = findSetup("beam")->params();  // UL: the converged increment of load step 11
+    setDefault(P, "a", 1);
+    setDefault(P, "mpType", int(MpType::MPM));
+    Analysis an = findSetup("beam")->setupGrid(P);
+    RunLog log;
+    for (int l = 1; l <= 10; ++l) loadStep(an, l, log, true);
+    const Eigen::VectorXd uvw = solveLoadStep(an, 11, 11.0 / an.lstps, 1.0, log, true);
+    std::vector<MaterialPoint> mpUL = an.mpData, mpPC = an.mpData;
+    const DetMPsOut ul = detMPs(uvw, mpUL, Formulation::UL), pc = detMPs(uvw, mpPC, Formulation::PC);
+    const Eigen::MatrixXd K(ul.Kt), KPC(pc.Kt);
+    CHECK((pc.fint - ul.fint).norm() <= 1e-13 * ul.fint.norm());
+    CHECK((KPC - K).norm() <= 1e-13 * K.norm());
+
+    std::vector<int> touching(an.mesh.nodes(), 0), lone;  // points on each node
+    for (const MaterialPoint& mp : an.mpData)
+      for (int v = 0; v < mp.nn; ++v) ++touching[mp.nIN[v]];
+    double sMax = 0;
+    for (const MaterialPoint& mp : mpUL) sMax = std::max(sMax, mp.sig.cwiseAbs().maxCoeff());
+    for (size_t p = 0; p < mpUL.size(); ++p) {
+      int alone = 0;
+      for (int v = 0; v < mpUL[p].nn; ++v) alone += (touching[mpUL[p].nIN[v]] == 1);
+      if (alone >= 2) lone.push_back(int(p));
+    }
+    REQUIRE(lone.size() == 1);                                  // the corner point at the tip
+    CHECK(mpUL[lone[0]].sig.cwiseAbs().maxCoeff() <= 1e-8 * sMax);  // stress free (to tol)
+
+    const std::vector<int> fd = detFDoFs(an.mesh);
+    Eigen::MatrixXd Kff(fd.size(), fd.size());
+    for (size_t i = 0; i < fd.size(); ++i)
+      for (size_t j = 0; j < fd.size(); ++j) Kff(i, j) = K(fd[i], fd[j]);
+    const Eigen::VectorXd lam = Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd>(
+        0.5 * (Kff + Kff.transpose()), Eigen::EigenvaluesOnly).eigenvalues();
+    const double lMax = lam.cwiseAbs().maxCoeff();
+    CHECK(std::abs(lam(0)) <= 1e-14 * lMax);                    // one zero-energy mode
+    CHECK(lam(1) >= 1e-7 * lMax);                               // and only one
+  }
+
+  TEST_CASE("formPCstiff: MPM beam at h = 0.5 m / with the ghost penalty UL and PC give the same points to 1e-10") {
+    const std::vector<std::pair<std::string, double>> set = {{"ghost", 0.001}};
+    const Analysis ul = mpmBeam(Formulation::UL, set), pc = mpmBeam(Formulation::PC, set);
+    double sMax = 0, dS = 0, dX = 0;
+    for (size_t p = 0; p < ul.mpData.size(); ++p) {
+      sMax = std::max(sMax, ul.mpData[p].sig.cwiseAbs().maxCoeff());
+      dS = std::max(dS, (ul.mpData[p].sig - pc.mpData[p].sig).cwiseAbs().maxCoeff());
+      dX = std::max(dX, (ul.mpData[p].mpC - pc.mpData[p].mpC).cwiseAbs().maxCoeff());
+    }
+    CHECK(dS <= 1e-10 * sMax);   // measured 5e-14
+    CHECK(dX <= 1e-10 * 10.0);   // relative to the beam length (measured 1e-14 m)
+  }
+
+  TEST_CASE("formPCstiff: MPM beam at h = 0.5 m / without a remedy UL and PC give the same tip to 1e-5 with NRitMax = 40") {
+    const std::vector<std::pair<std::string, double>> set = {{"NRitMax", 40}};
+    const Analysis ul = mpmBeam(Formulation::UL, set), pc = mpmBeam(Formulation::PC, set);
+    const Params P = findSetup("beam")->params();
+    const Results ru = findSetup("beam")->results(ul, P), rp = findSetup("beam")->results(pc, P);
+    CHECK(std::abs(rp[0].second / ru[0].second - 1.0) <= 1e-5);  // tip u (measured 5e-7)
+    CHECK(std::abs(rp[1].second / ru[1].second - 1.0) <= 1e-5);  // tip v (measured 8e-8)
   }
 }
