@@ -44,7 +44,9 @@ static std::vector<BC> scaled(std::vector<BC> bc, double factor);
 static SpMat ghostPenaltyOf(const Analysis& an);
 static void recordPass(RunLog& log, const std::vector<MaterialPoint>& mpData, int lstp, int NRit,
                        double fErr, bool quiet);
-static void checkConverged(const Analysis& an, int lstp, int NRit, double fErr);
+static double normalisedResidual(const Eigen::VectorXd& oobf, const Eigen::VectorXd& fext,
+                                 const Eigen::VectorXd& frct);
+static void checkConverged(const Analysis& an, const RunLog& log, int lstp, int NRit, double fErr);
 static void recordStep(RunLog& log, const Increment& inc, int NRit, double fErr, bool converged);
 
 int ample(const Setup& setup, const Params& P, const RunOptions& opt) {
@@ -75,7 +77,7 @@ void solve(Analysis& an, RunLog& log, const RunOptions& opt) {
   std::vector<MaterialPoint>& mpData = an.mpData;
   Timers& T = log.t;
   const int nDoF = mesh.nDoF();
-  LoadSteps loadSteps(an.lstps, an.substeps);                        // lstp = 1 .. lstps
+  LoadSteps loadSteps(an.lstps, an.substeps, opt.lastStep);          // lstp = 1 .. lstps
   for (Increment inc; loadSteps.next(inc);) {                        // load steps
     const int lstp = inc.lstp;
     if (inc.first) startStep(an, lstp, log, opt.quiet);              // progress, setup's hook
@@ -97,11 +99,11 @@ void solve(Analysis& an, RunLog& log, const RunOptions& opt) {
         mps = timed(T.detMPs, detMPs, uvw, mpData, an.formulation, std::move(mps.Kt));
         addGhostPenalty(Kgp, uvw, mps.Kt, mps.fint);                 // remedy (off: nothing)
         oobf = fext - mps.fint + frct;                               // eq 31 with reactions
-        fErr = oobf.norm() / ((fext + frct).array() + DBL_EPSILON).matrix().norm();  // eq 35
+        fErr = normalisedResidual(oobf, fext, NRit > 0 ? frct : an.frct);  // eq 35
         recordPass(log, mpData, lstp, NRit, fErr, opt.quiet);        // throws on NaN
         NRit++;
       }
-      checkConverged(an, lstp, NRit, fErr);                          // throws when fErr > tol
+      checkConverged(an, log, lstp, NRit, fErr);                     // throws when fErr > tol
     } catch (const RunError& e) {                                    // no convergence, NaN, singular
       recordStep(log, inc, NRit, fErr, false);
       loadSteps.retry(inc, e, an, opt.quiet);                        // remedies (off: rethrows e)
@@ -109,10 +111,11 @@ void solve(Analysis& an, RunLog& log, const RunOptions& opt) {
     }
     recordStep(log, inc, NRit, fErr, true);
     an.frct = frct;
+    an.uvw = uvw;
     timed(T.updateMPs, updateMPs, mesh, uvw, an.domainUpdate, mpData);
     if (!inc.last) continue;                                         // (remedy: a first half)
     if (an.afterStep) an.afterStep(an, lstp);                        // setup's hook
-    timed(T.postPro, postPro, mesh, mpData, lstp, opt.vtkEvery, opt.outDir);
+    timed(T.postPro, postPro, mesh, mpData, uvw, lstp, opt.vtkEvery, opt.outDir);
     log.steps.back().seconds = log.stepClock.lap();
     log.lastConverged = lstp;
   }
@@ -179,11 +182,31 @@ static void recordPass(RunLog& log, const std::vector<MaterialPoint>& mpData, in
                       std::to_string(NRit) + ": the residual is not finite (NaN or Inf), " + where);
 }
 
-static void checkConverged(const Analysis& an, int lstp, int NRit, double fErr) {
+// eq 35: fErr = |oobf| / |fext + frct|, with DBL_EPSILON added to each entry of the
+// denominator as the original. Pass 0 comes before the first solve, so the reactions
+// of this step are not known yet: the caller gives those of the last converged step
+// there (a displacement-driven step has fext = 0, and |fext + 0| would be ~1e-16).
+// Pass 0 never ends the loop (NRit < 2), so this changes no converged result.
+static double normalisedResidual(const Eigen::VectorXd& oobf, const Eigen::VectorXd& fext,
+                                 const Eigen::VectorXd& frct) {
+  const Eigen::VectorXd r = (frct.size() == fext.size()) ? Eigen::VectorXd(fext + frct) : fext;
+  return oobf.norm() / (r.array() + DBL_EPSILON).matrix().norm();
+}
+
+// a step that ended with fErr > tol stops (or is retried); when the residual was
+// still falling fast, the message says that more passes may well converge
+static void checkConverged(const Analysis& an, const RunLog& log, int lstp, int NRit, double fErr) {
   if (fErr <= an.tol) return;
-  char msg[200];
-  std::snprintf(msg, sizeof msg, "load step %d did not converge: fErr = %.3e > tol = %.1e "
-                "after %d Newton-Raphson passes (NRitMax = %d)", lstp, fErr, an.tol, NRit, an.NRitMax);
+  char msg[400];
+  int n = std::snprintf(msg, sizeof msg, "load step %d did not converge: fErr = %.3e > tol = %.1e "
+                        "after %d Newton-Raphson passes (NRitMax = %d)", lstp, fErr, an.tol, NRit, an.NRitMax);
+  const size_t k = log.residuals.size();
+  if (k >= 3 && log.residuals[k - 3].lstp == lstp) {
+    const double r0 = log.residuals[k - 3].fErr, r1 = log.residuals[k - 2].fErr, r2 = fErr;
+    if (r2 < r1 && r1 < r0 && r2 < 1e-3)
+      std::snprintf(msg + n, sizeof msg - n, "; the residual was still falling (%.1e, %.1e, %.1e): "
+                    "more passes may converge, e.g. NRitMax=%d", r0, r1, r2, 2 * an.NRitMax);
+  }
   throw NewtonFailure(msg);
 }
 

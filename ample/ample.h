@@ -25,12 +25,13 @@ struct RunOptions {
   std::string outDir;      // output folder
   int vtkEvery = 1;        // write mpData_<lstp>.vtk every vtkEvery steps (0 = none)
   bool quiet = false;      // no progress on stdout
+  int lastStep = 0;        // stop after this load step (0: all lstps; the tests use it)
 };
 
 int ample(const Setup& setup, const Params& P, const RunOptions& opt);
 
 // the load steps lstp = 1..an.lstps with their Newton-Raphson loops (seed 002
 // fig 4 below setupGrid); by default quiet and without files
-void solve(Analysis& an, RunLog& log, const RunOptions& opt = RunOptions{"", 0, true});
+void solve(Analysis& an, RunLog& log, const RunOptions& opt = RunOptions{"", 0, true, 0});
 
 }  // namespace ample

@@ -30,6 +30,7 @@ struct Analysis {
   Formulation formulation = Formulation::UL;        // frame of equilibrium (seed 000)
   DomainUpdate domainUpdate = DomainUpdate::Uii;    // GIMP domain update (seed 002 eq 34)
   Eigen::VectorXd frct;                             // reactions of the last converged step
+  Eigen::VectorXd uvw;                              // its converged displacement increment
   // optional work of a setup at the start / end of each load step (nullptr: none),
   // e.g. a grid that follows the body, boundary cells that change, a reaction history
   std::function<void(Analysis& an, int lstp)> beforeStep, afterStep;

@@ -5,11 +5,13 @@
 //--------------------------------------------------------------------------
 #include "loadSteps.h"
 #include "constitutive/Hooke3d.h"
+#include <algorithm>
 #include <cstdio>
 
 namespace ample {
 
-LoadSteps::LoadSteps(int lstps, int substeps) : lstps_(lstps), substeps_(substeps) {}
+LoadSteps::LoadSteps(int lstps, int substeps, int lastStep)
+    : lstps_(lstps), substeps_(substeps), lastStep_(lastStep > 0 ? std::min(lastStep, lstps) : lstps) {}
 
 bool LoadSteps::next(Increment& inc) {
   if (!todo_.empty()) {
@@ -17,7 +19,7 @@ bool LoadSteps::next(Increment& inc) {
     todo_.pop_back();
     return true;
   }
-  if (lstp_ == lstps_) return false;
+  if (lstp_ == lastStep_) return false;
   ++lstp_;
   inc = Increment{lstp_, double(lstp_ - 1) / lstps_, double(lstp_) / lstps_, 0, true, true, ""};
   return true;

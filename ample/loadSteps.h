@@ -39,14 +39,14 @@ struct Increment {
 
 class LoadSteps {
  public:
-  LoadSteps(int lstps, int substeps);
+  LoadSteps(int lstps, int substeps, int lastStep = 0);  // lastStep 0: all lstps
   bool next(Increment& inc);    // the next increment to solve; false after the last
   // remedies: restore the converged state and queue inc again with the ghost
   // penalty, or its two halves; when neither is allowed, throw e (NewtonFailure)
   void retry(const Increment& inc, const RunError& e, Analysis& an, bool quiet);
 
  private:
-  int lstps_, substeps_, lstp_ = 0;
+  int lstps_, substeps_, lastStep_, lstp_ = 0;
   std::vector<Increment> todo_;  // halves still to solve, the next one at the back
 };
 

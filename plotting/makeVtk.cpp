@@ -22,7 +22,7 @@ void atomicWrite(const std::string& path, const std::string& text) {
   if (std::rename(tmp.c_str(), path.c_str()) != 0) throw RunError("cannot rename " + tmp);
 }
 
-void makeVtk(const Mesh& mesh, const std::string& path) {
+void makeVtk(const Mesh& mesh, const std::string& path, const Eigen::VectorXd& uvw) {
   std::ostringstream s;
   s.precision(15);
   s << "# vtk DataFile Version 2.0\nample-cpp background mesh\nASCII\n"
@@ -36,6 +36,10 @@ void makeVtk(const Mesh& mesh, const std::string& path) {
   }
   s << "CELL_TYPES " << mesh.nels() << "\n";
   for (int e = 0; e < mesh.nels(); ++e) s << "9\n";  // VTK_QUAD
+  if (uvw.size() == mesh.nDoF()) {
+    s << "POINT_DATA " << mesh.nodes() << "\nVECTORS displacement double\n";
+    for (int n = 0; n < mesh.nodes(); ++n) s << uvw(dof(n, 0)) << " " << uvw(dof(n, 1)) << " 0\n";
+  }
   atomicWrite(path, s.str());
 }
 

@@ -1,9 +1,11 @@
 //--------------------------------------------------------------------------
 // makeVtk — legacy VTK file of the background grid
 //--------------------------------------------------------------------------
-// Seed 002 sec 5.2 (fig 13): mesh.vtk, an unstructured grid of quads (z = 0),
-// readable by ParaView and VisIt. Written to a temporary name, then renamed.
-// Inputs:  mesh (coord, etpl) · path
+// Seed 002 sec 5.2 (fig 13): an unstructured grid of quads (z = 0), readable
+// by ParaView and VisIt, with the nodal displacements uvw of a load step as
+// point data when given (mesh_<lstp>.vtk; none for mesh.vtk). Written to a
+// temporary name, then renamed.
+// Inputs:  mesh (coord, etpl) · path · uvw (nDoF, or empty)
 // Outputs: the file at path
 // Tests:   tests/test_output.cpp
 //--------------------------------------------------------------------------
@@ -13,7 +15,7 @@
 
 namespace ample {
 
-void makeVtk(const Mesh& mesh, const std::string& path);
+void makeVtk(const Mesh& mesh, const std::string& path, const Eigen::VectorXd& uvw = Eigen::VectorXd());
 
 // write `text` to path.tmp and rename it to path, so that a file that exists
 // is complete; throws RunError when the file cannot be written

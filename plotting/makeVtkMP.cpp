@@ -28,8 +28,10 @@ void makeVtkMP(const std::vector<MaterialPoint>& mpData, const std::string& path
     s << "SCALARS " << name << " double 1\nLOOKUP_TABLE default\n";
     for (const MaterialPoint& mp : mpData) s << f(mp) << "\n";
   };
-  const char* sigName[4] = {"sigma_xx", "sigma_yy", "sigma_zz", "sigma_xy"};
-  for (int c = 0; c < 4; ++c) scalar(sigName[c], [c](const MaterialPoint& mp) { return mp.sig(c); });
+  scalar("ux", [](const MaterialPoint& mp) { return mp.u(0); });
+  scalar("uy", [](const MaterialPoint& mp) { return mp.u(1); });
+  const char* sigName[6] = {"sigma_xx", "sigma_yy", "sigma_zz", "sigma_xy", "sigma_yz", "sigma_zx"};
+  for (int c = 0; c < 6; ++c) scalar(sigName[c], [c](const MaterialPoint& mp) { return mp.sig(c); });
   scalar("rho_vonMises", [](const MaterialPoint& mp) {
     const double p = mp.sig.head<3>().sum() / 3.0;
     return std::sqrt((mp.sig.head<3>().array() - p).square().sum() + 2 * mp.sig.tail<3>().squaredNorm());

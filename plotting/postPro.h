@@ -1,10 +1,13 @@
 //--------------------------------------------------------------------------
 // postPro — VTK output of a converged load step
 //--------------------------------------------------------------------------
-// Seed 002 sec 5.2 (fig 13): mesh.vtk once (the grid does not change) and
-// mpData_<lstp>.vtk every vtkEvery load steps; nothing
-// when vtkEvery = 0.
-// Inputs:  mesh · mpData · lstp · vtkEvery · outDir
+// Seed 002 sec 5.2 (fig 13): every vtkEvery load steps mpData_<lstp>.vtk (the
+// points) and mesh_<lstp>.vtk (the grid of that step with its nodal
+// displacements uvw, as AMPLE writes it; a grid that moves, as the stretch's,
+// is written as it is in that step); mesh.vtk (the grid alone) once, with the
+// first; nothing when vtkEvery = 0.
+// Inputs:  mesh · mpData · uvw (nDoF) converged increment of the step · lstp ·
+//          vtkEvery · outDir
 // Outputs: files in outDir
 // Tests:   tests/test_output.cpp
 //--------------------------------------------------------------------------
@@ -14,7 +17,7 @@
 
 namespace ample {
 
-void postPro(const Mesh& mesh, const std::vector<MaterialPoint>& mpData, int lstp, int vtkEvery,
-             const std::string& outDir);
+void postPro(const Mesh& mesh, const std::vector<MaterialPoint>& mpData, const Eigen::VectorXd& uvw,
+             int lstp, int vtkEvery, const std::string& outDir);
 
 }  // namespace ample

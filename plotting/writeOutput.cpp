@@ -22,7 +22,8 @@ void prepareOutput(const std::string& outDir) {
     const std::string n = e.path().filename().string();
     const bool ours = n == "mesh.vtk" || n == "steps.csv" || n == "residuals.csv" ||
                       n == "mp_final.csv" || n == "summary.json" || n == "history.csv" ||
-                      (n.rfind("mpData_", 0) == 0 && e.path().extension() == ".vtk");
+                      ((n.rfind("mpData_", 0) == 0 || n.rfind("mesh_", 0) == 0) &&
+                       e.path().extension() == ".vtk");
     if (ours) fs::remove(e.path(), ec);
   }
 }

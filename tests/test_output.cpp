@@ -109,3 +109,68 @@ TEST_SUITE("output") {
     CHECK(!std::filesystem::exists(dir + "/mpData_1.vtk"));
   }
 }
+
+namespace {
+// the numbers that follow `key` in a legacy VTK file (a POINTS block or a field), n x k of them
+std::vector<double> vtkBlock(const std::string& vtk, const std::string& key, int count) {
+  const size_t at = vtk.find(key);
+  REQUIRE(at != std::string::npos);
+  std::stringstream s(vtk.substr(at));
+  std::string line;
+  std::getline(s, line);                                   // the key line
+  if (key.rfind("SCALARS", 0) == 0) std::getline(s, line);  // LOOKUP_TABLE default
+  std::vector<double> v(count);
+  for (double& x : v) s >> x;
+  return v;
+}
+}  // namespace
+
+// issue 10 item 6: the grid of each output step with its nodal displacements, as AMPLE
+// writes it; a grid that moves (the stretch) as it is in that step; all six stresses and
+// the displacement components of the points as scalars
+TEST_SUITE("output") {
+  TEST_CASE("output: mesh_<lstp>.vtk holds the grid of that step and its nodal displacements") {
+    const std::string dir = std::string(AMPLE_TEST_TMP) + "/output_stretch";
+    const Setup* s = findSetup("stretch");
+    Params P = s->params();
+    setDefault(P, "lstps", 5);
+    REQUIRE(ample::ample(*s, P, RunOptions{dir, 1, true}) == 0);
+    for (int lstp : {1, 5}) {
+      CAPTURE(lstp);
+      const std::string vtk = testing::fileText(dir + "/mesh_" + std::to_string(lstp) + ".vtk");
+      const std::vector<double> x = vtkBlock(vtk, "POINTS 9 double", 27);   // 3 x 3 nodes
+      const std::vector<double> u = vtkBlock(vtk, "VECTORS displacement double", 27);
+      const double L = 2.0 + (lstp - 1) * 0.2;             // the grid spans the body at the step's start
+      double xMax = 0;
+      for (int n = 0; n < 9; ++n) xMax = std::max(xMax, x[3 * n]);
+      CHECK(xMax == doctest::Approx(L).epsilon(1e-14));
+      for (int n = 0; n < 9; ++n) {
+        if (x[3 * n] > L - 1e-9) CHECK(u[3 * n] == doctest::Approx(0.2).epsilon(1e-14));  // pulled side
+        if (x[3 * n] < 1e-9) CHECK(u[3 * n] == 0.0);                                        // roller
+        if (x[3 * n + 1] < 1e-9) CHECK(u[3 * n + 1] == 0.0);                                // base
+      }
+    }
+    const std::string mp = testing::fileText(dir + "/mpData_5.vtk");
+    for (const char* f : {"sigma_xx", "sigma_yy", "sigma_zz", "sigma_xy", "sigma_yz", "sigma_zx", "ux", "uy"})
+      CHECK(mp.find(std::string("SCALARS ") + f + " double 1") != std::string::npos);
+  }
+}
+
+// issue 10 item 6: at pass 0 the reactions of the step are not known; with fext = 0 (a
+// displacement-driven step) eq 35 divided by |0 + 0| + eps: 5.4e17 at step 7 of the stretch
+TEST_SUITE("output") {
+  TEST_CASE("output: the pass-0 residual of a displacement-driven step is of order one") {
+    const Setup* s = findSetup("stretch");
+    const Params P = s->params();
+    Analysis an = s->setupGrid(P);
+    RunLog log;
+    solve(an, log);
+    int rows = 0;
+    for (const ResidualRow& r : log.residuals)
+      if (r.NRit == 0 && r.lstp > 1) {                     // step 1 starts unstressed: 0
+        CHECK(r.fErr < 10.0);
+        ++rows;
+      }
+    CHECK(rows == 19);
+  }
+}
