@@ -45,7 +45,7 @@ static SpMat ghostPenaltyOf(const Analysis& an);
 static void recordPass(RunLog& log, const std::vector<MaterialPoint>& mpData, int lstp, int NRit,
                        double fErr, bool quiet);
 static double normalisedResidual(const Eigen::VectorXd& oobf, const Eigen::VectorXd& fext,
-                                 const Eigen::VectorXd& frct);
+                                 const Eigen::VectorXd& frct, const Eigen::VectorXd& frctLast, int NRit);
 static void checkConverged(const Analysis& an, const RunLog& log, int lstp, int NRit, double fErr);
 static void recordStep(RunLog& log, const Increment& inc, int NRit, double fErr, bool converged);
 
@@ -99,7 +99,7 @@ void solve(Analysis& an, RunLog& log, const RunOptions& opt) {
         mps = timed(T.detMPs, detMPs, uvw, mpData, an.formulation, std::move(mps.Kt));
         addGhostPenalty(Kgp, uvw, mps.Kt, mps.fint);                 // remedy (off: nothing)
         oobf = fext - mps.fint + frct;                               // eq 31 with reactions
-        fErr = normalisedResidual(oobf, fext, NRit > 0 ? frct : an.frct);  // eq 35
+        fErr = normalisedResidual(oobf, fext, frct, an.frct, NRit);  // eq 35
         recordPass(log, mpData, lstp, NRit, fErr, opt.quiet);        // throws on NaN
         NRit++;
       }
@@ -183,14 +183,18 @@ static void recordPass(RunLog& log, const std::vector<MaterialPoint>& mpData, in
 }
 
 // eq 35: fErr = |oobf| / |fext + frct|, with DBL_EPSILON added to each entry of the
-// denominator as the original. Pass 0 comes before the first solve, so the reactions
-// of this step are not known yet: the caller gives those of the last converged step
-// there (a displacement-driven step has fext = 0, and |fext + 0| would be ~1e-16).
-// Pass 0 never ends the loop (NRit < 2), so this changes no converged result.
+// denominator as the original. Pass 0 comes before the first solve, so frct is still
+// 0: in a displacement-driven step (fext = 0, e.g. the stretch) the denominator would
+// be ~1e-16 and fErr ~1e17. There, and only there, the reactions of the last
+// converged step (frctLast) stand in. Pass 0 never ends the loop (NRit < 2), so no
+// converged result changes, and a step with loads keeps the paper's pass-0 value
+// (seed 000 table 8).
 static double normalisedResidual(const Eigen::VectorXd& oobf, const Eigen::VectorXd& fext,
-                                 const Eigen::VectorXd& frct) {
-  const Eigen::VectorXd r = (frct.size() == fext.size()) ? Eigen::VectorXd(fext + frct) : fext;
-  return oobf.norm() / (r.array() + DBL_EPSILON).matrix().norm();
+                                 const Eigen::VectorXd& frct, const Eigen::VectorXd& frctLast, int NRit) {
+  const bool noLoad = NRit == 0 && frctLast.size() == fext.size() &&
+                      fext.norm() <= 1e-12 * frctLast.norm();
+  const Eigen::VectorXd& r = noLoad ? frctLast : frct;
+  return oobf.norm() / ((fext + r).array() + DBL_EPSILON).matrix().norm();
 }
 
 // a step that ended with fErr > tol stops (or is retried); when the residual was
