@@ -8,7 +8,7 @@
 // error (eq 37) = sum_p |sigma_yy,p - sigma_yy(Y_p)| V0_p / (rho g l0 V0).
 //   ample compaction nelsy=256 mpType=1     # standard MPM, 256 cells
 // Outputs: Analysis (mesh, mpData, lstps, g) · results: error (eq 37)
-// Tests:   tests/test_ample.cpp, tests/test_output.cpp
+// Tests:   tests/test_setups.cpp (eq 36 / 37 values), tests/test_ample.cpp, tests/test_output.cpp
 //--------------------------------------------------------------------------
 #include "ample/formCoord2D.h"
 #include "setupHelpers.h"

@@ -8,7 +8,7 @@
 // Inputs:  dF (3x3) increment · epsE (6) elastic strain, updated in place ·
 //          mCst · cmType
 // Outputs: Kirchhoff stress tau (6)
-// Tests:   tests/test_setups.cpp
+// Tests:   tests/test_ample.cpp (against closed forms written in the test)
 //--------------------------------------------------------------------------
 #pragma once
 #include "ample/mpData.h"

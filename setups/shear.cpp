@@ -23,7 +23,7 @@
 //   ample shear mpType=CPDI2 cmType=VM
 // Outputs: results: error = max_p |sigma_p - sigma_ref| / |sigma_ref| at the
 //          last step; history.csv: lstp, gamma, mean and reference sigma_xy, error
-// Tests:   tests/test_ample.cpp
+// Tests:   tests/test_ample.cpp (against closed forms written in the test)
 //--------------------------------------------------------------------------
 #include "ample/elemMPinfo.h"
 #include "ample/formCoord2D.h"

@@ -13,7 +13,7 @@
 // Outputs: results: reaction at the last step, its reference and the largest
 //          difference over the steps relative to the largest reference;
 //          history.csv: lstp, reaction, reference
-// Tests:   tests/test_setups.cpp
+// Tests:   tests/test_ample.cpp (against closed forms written in the test)
 //--------------------------------------------------------------------------
 #include "ample/formCoord2D.h"
 #include "homogeneous.h"

@@ -6,6 +6,8 @@
 #include "setups/setupHelpers.h"
 #include "setups/setups.h"
 #include <fstream>
+#include <map>
+#include <sstream>
 #include <random>
 #include <string>
 
@@ -68,6 +70,73 @@ inline double tangentError(Analysis& an, const Eigen::VectorXd& uvw, Formulation
 inline std::string fileText(const std::string& path) {
   std::ifstream f(path);
   return std::string(std::istreambuf_iterator<char>(f), {});
+}
+
+// the point data of a legacy VTK file written by makeVtkMP, read by field name:
+// "points" (x y z per point), and every SCALARS / VECTORS block under its own
+// name (1 or 3 values per point), so fields added later do not disturb a reader
+struct VtkPoints {
+  int n = 0;
+  std::map<std::string, std::vector<std::vector<double>>> field;  // name -> per point values
+  const std::vector<double>& at(const std::string& name, int p) const { return field.at(name).at(p); }
+  bool has(const std::string& name) const { return field.count(name) > 0; }
+};
+inline VtkPoints readVtkPoints(const std::string& path) {
+  VtkPoints v;
+  std::ifstream f(path);
+  auto block = [&](const std::string& name, int width) {
+    std::vector<std::vector<double>>& d = v.field[name];
+    d.assign(v.n, std::vector<double>(width));
+    for (int p = 0; p < v.n; ++p)
+      for (int c = 0; c < width; ++c) f >> d[p][c];
+  };
+  for (std::string word; f >> word;) {
+    std::string name, type, rest;
+    if (word == "POINTS") {
+      f >> v.n >> type;
+      block("points", 3);
+    } else if (word == "SCALARS") {
+      int comps = 1;
+      f >> name >> type;
+      std::getline(f, rest);  // optional number of components
+      int k = 0;
+      if (std::stringstream(rest) >> k) comps = k;
+      f >> word >> rest;       // LOOKUP_TABLE default
+      block(name, comps);
+    } else if (word == "VECTORS") {
+      f >> name >> type;
+      block(name, 3);
+    }
+  }
+  return v;
+}
+
+// rows of a CSV file with a header line; columns by name
+struct CsvTable {
+  std::vector<std::string> names;
+  std::vector<std::vector<double>> rows;
+  int col(const std::string& name) const {
+    for (size_t c = 0; c < names.size(); ++c)
+      if (names[c] == name) return int(c);
+    return -1;
+  }
+  double at(size_t r, const std::string& name) const { return rows.at(r).at(size_t(col(name))); }
+};
+inline CsvTable readCsvTable(const std::string& path) {
+  CsvTable t;
+  std::ifstream f(path);
+  std::string line;
+  std::getline(f, line);
+  std::stringstream h(line);
+  for (std::string cell; std::getline(h, cell, ',');) t.names.push_back(cell);
+  while (std::getline(f, line)) {
+    if (line.empty()) continue;
+    std::vector<double> row;
+    std::stringstream s(line);
+    for (std::string cell; std::getline(s, cell, ',');) row.push_back(std::stod(cell));
+    t.rows.push_back(row);
+  }
+  return t;
 }
 
 }  // namespace ample::testing

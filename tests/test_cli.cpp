@@ -2,8 +2,12 @@
 // checked, bad input refused with exit status 2 and no output written.
 #include "ample/cli.h"
 #include "ample/errors.h"
+#include "setups/setups.h"
 #include <doctest/doctest.h>
+#include <cmath>
 #include <cstdlib>
+#include <map>
+#include <sstream>
 #include <random>
 #include <filesystem>
 #include <sys/wait.h>
@@ -15,6 +19,83 @@ int runBinary(const std::string& args) {
   const std::string cmd = std::string(AMPLE_BINARY) + " " + args + " >/dev/null 2>&1";
   const int st = std::system(cmd.c_str());
   return WIFEXITED(st) ? WEXITSTATUS(st) : -1;
+}
+// the range of a parameter as the message should state it, e.g. "(-1, 0.5)" or "[1, 64]"
+std::string rangeOf(const Param& p) {
+  auto num = [](double v) {
+    std::ostringstream s;
+    if (std::isinf(v)) s << (v > 0 ? "inf" : "-inf"); else s << v;
+    return s.str();
+  };
+  return (p.loOpen ? "(" : "[") + num(p.lo) + ", " + num(p.hi) + (p.hiOpen ? ")" : "]");
+}
+bool inside(const Param& p, double v) {
+  return std::isfinite(v) && (p.loOpen ? v > p.lo : v >= p.lo) && (p.hiOpen ? v < p.hi : v <= p.hi) &&
+         (!p.isInteger || v == std::floor(v));
+}
+const Param* paramOf(const Params& P, const std::string& name) {
+  for (const Param& p : P)
+    if (p.name == name) return &p;
+  return nullptr;
+}
+
+// a parsed run: every value inside its range, and the last name=value of each name kept
+bool parsedValuesValid(const CliRequest& r, const std::vector<std::string>& args) {
+  bool ok = true;
+  for (const Param& p : r.params) {
+    if (inside(p, p.value)) continue;
+    ok = false;
+    MESSAGE("parameter " << p.name << " = " << p.value << " outside " << rangeOf(p));
+  }
+  std::map<std::string, std::string> last;
+  std::string vtk = "1";
+  for (size_t i = 1; i < args.size(); ++i) {
+    if (args[i] == "--out" || args[i] == "--vtk") {
+      if (args[i] == "--vtk") vtk = args[i + 1];
+      ++i;
+      continue;
+    }
+    const size_t eq = args[i].find('=');
+    if (eq != std::string::npos && eq > 0) last[args[i].substr(0, eq)] = args[i].substr(eq + 1);
+  }
+  for (const auto& kv : last) {
+    const Param* p = paramOf(r.params, kv.first);
+    if (!p) { MESSAGE("unknown name accepted: " << kv.first); ok = false; continue; }
+    double v = std::strtod(kv.second.c_str(), nullptr);
+    for (size_t k = 0; k < p->names.size(); ++k)
+      if (kv.second == p->names[k]) v = p->lo + double(k);
+    if (p->value != v) { MESSAGE(kv.first << " = " << kv.second << " kept as " << p->value); ok = false; }
+  }
+  if (r.options.vtkEvery != std::strtod(vtk.c_str(), nullptr)) ok = false;
+  return ok;
+}
+
+// a refusal names the offending word in quotes; a value out of range names its parameter
+// and the valid range, and is indeed outside it
+bool refusalNamesOffender(const std::string& m, const std::vector<std::string>& args, int& ranges) {
+  if (args.empty()) return m.find("no setup given") != std::string::npos;
+  const Setup* s = findSetup(args[0]);
+  const Params P = s ? s->params() : Params{};
+  bool named = false;  // the setup name itself only counts when it is the offender
+  for (size_t i = s ? 1 : 0; i < args.size(); ++i) {
+    const std::string& a = args[i];
+    const size_t eq = a.find('=');
+    const std::string name = eq == std::string::npos ? a : a.substr(0, eq);
+    if (m.find("'" + a + "'") != std::string::npos || m.find("'" + name + "'") != std::string::npos) named = true;
+    if (!s || eq == std::string::npos) continue;
+    const std::string text = a.substr(eq + 1);
+    if (m.find("parameter '" + name + "' = " + text + " is out of range") != 0) continue;
+    const Param* p = paramOf(P, name);  // a value refused as out of range
+    if (!p) return false;
+    ++ranges;
+    const double v = std::strtod(text.c_str(), nullptr);
+    bool isName = false;
+    for (const std::string& n : p->names) isName = isName || n == text;
+    if (m.find("allowed ") == std::string::npos || m.find(rangeOf(*p)) == std::string::npos) return false;
+    if (!isName && inside(*p, v)) return false;  // a valid value refused
+  }
+  if (!named) MESSAGE("refusal does not name the offender: " << m);
+  return named;
 }
 }  // namespace
 
@@ -85,7 +166,7 @@ TEST_SUITE("cli") {
         "mpType=gimp", "=", "==", "a=b=c", "lstps=1e9", "tol=1e-400", "0", "-1", "1e", "nan", "",
         "domainUpdate=corner", "formulation=PC", "substeps=31", "dl=50", "x"};
     std::uniform_int_distribution<int> pick(0, int(words.size()) - 1), len(0, 7), byte(1, 255);
-    int parsed = 0, refused = 0;
+    int parsed = 0, refused = 0, runs = 0, ranges = 0, bad = 0;
     for (int trial = 0; trial < 20000; ++trial) {
       std::vector<std::string> args;
       for (int k = len(gen); k > 0; --k) {
@@ -94,15 +175,22 @@ TEST_SUITE("cli") {
         if (gen() % 7 == 0 && !w.empty()) w[gen() % w.size()] = char(byte(gen));
         args.push_back(w);
       }
+      CAPTURE(args.size());
       try {
-        parseArgs(args);
+        const CliRequest r = parseArgs(args);
         ++parsed;
-      } catch (const InputError&) {
-        ++refused;  // the only exception allowed
+        if (r.mode == CliMode::Run) {
+          ++runs;
+          bad += !parsedValuesValid(r, args);
+        }
+      } catch (const InputError& e) {  // the only exception allowed
+        ++refused;
+        bad += !refusalNamesOffender(e.what(), args, ranges);
       }
     }
-    CHECK(parsed + refused == 20000);
-    CHECK(parsed > 0);
-    CHECK(refused > 0);
+    CHECK(bad == 0);          // every parsed list inside its ranges, every refusal named
+    CHECK(runs > 100);        // both outcomes are exercised
+    CHECK(refused > 100);
+    CHECK(ranges > 10);       // including refusals of a value out of its range
   }
 }

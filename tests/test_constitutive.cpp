@@ -25,6 +25,20 @@ double rhoOf(const Vector6d& s) {  // sqrt(2 J2) = |s| of the stress 6-vector
   const Vector6d d = devOf(s);
   return std::sqrt(d.head<3>().squaredNorm() + 2 * d.tail<3>().squaredNorm());
 }
+// the elastic matrix for E = 1e6 Pa, nu = 0.3 written out by hand: lambda = E nu / ((1 + nu)
+// (1 - 2 nu)) = 3e5 / 0.52 = 576923.0769230769, G = E / (2 (1 + nu)) = 1e6 / 2.6 =
+// 384615.3846153846, lambda + 2 G = 1346153.846153846; G on the engineering shears
+Matrix6d handD() {
+  const double l = 576923.0769230769, g = 384615.3846153846, d = 1346153.846153846;
+  Matrix6d D;
+  D << d, l, l, 0, 0, 0,
+       l, d, l, 0, 0, 0,
+       l, l, d, 0, 0, 0,
+       0, 0, 0, g, 0, 0,
+       0, 0, 0, 0, g, 0,
+       0, 0, 0, 0, 0, g;
+  return D;
+}
 // a plastic trial strain with all six components non-zero
 Vector6d plasticStrain() {
   Vector6d eps;
@@ -58,7 +72,7 @@ TEST_SUITE("Hooke3d") {
     CHECK(meanOf(o.Ksig) == doctest::Approx(3 * K * 1e-3).epsilon(1e-13));
     CHECK(rhoOf(o.Ksig) <= 1e-12 * std::abs(meanOf(o.Ksig)));
     CHECK((o.D - o.D.transpose()).norm() == 0.0);
-    CHECK((o.D - elasticStiffness(E, nu)).norm() == 0.0);
+    CHECK((o.D - handD()).norm() <= 1e-12 * handD().norm());
   }
 }
 
@@ -69,7 +83,7 @@ TEST_SUITE("VMconst") {
     const ConstOut o = VMconst(eps, mCst), e = Hooke3d(eps, mCst);
     REQUIRE(rhoOf(e.Ksig) < rhoY);
     CHECK((o.Ksig - e.D * eps).norm() <= 1e-14 * e.Ksig.norm());
-    CHECK(o.D == elasticStiffness(E, nu));
+    CHECK((o.D - handD()).norm() <= 1e-12 * handD().norm());
     CHECK(o.epsE == eps);
   }
   TEST_CASE("VMconst: a trial state far outside returns onto the surface radially") {
@@ -83,7 +97,7 @@ TEST_SUITE("VMconst") {
   }
   TEST_CASE("VMconst: the returned elastic strain gives the returned stress / D epsE = tau") {
     const ConstOut o = VMconst(plasticStrain(), mCst);
-    CHECK((elasticStiffness(E, nu) * o.epsE - o.Ksig).norm() <= 1e-10 * o.Ksig.norm());
+    CHECK((handD() * o.epsE - o.Ksig).norm() <= 1e-10 * o.Ksig.norm());
   }
   TEST_CASE("VMconst: algorithmic tangent equals central differences of the return map") {
     const Vector6d eps = plasticStrain();

@@ -1,0 +1,131 @@
+#!/usr/bin/env bash
+#--------------------------------------------------------------------------
+# mutants.sh — mutation check: does the test suite see a class of errors?
+#--------------------------------------------------------------------------
+# Each mutant is one plausible mistake, written as a sed substitution on one
+# file. The script copies the source tree (no build/, no .git) to a work folder
+# outside the worktree, applies ONE mutation at a time, rebuilds ample and
+# ample_tests there with -j1 in a build folder that is kept between mutants and
+# between runs (so only the mutated file recompiles and relinks), runs the tests
+# and reports "caught" (a test fails) or "SURVIVED" (every test passes). The
+# file is restored after each mutant. The unmutated tree is built and tested
+# first: if its tests fail, nothing is reported.
+#
+#   tools/mutants.sh                    # every mutant, tests of the working tree
+#   tools/mutants.sh compaction-vp vtk-vm-no-2     # some of them
+#   tools/mutants.sh --list             # names, files and substitutions
+#   tools/mutants.sh --tests-rev REV    # the tests/ folder of git revision REV
+#                                       # (e.g. the suite before a change: "before")
+# Environment: AMPLE_MUTANTS_DIR  work folder (default /tmp/ample-mutants-$USER);
+#              AMPLE_MUTANTS_TESTS  doctest filter arguments for every mutant
+#              (default: every test except the suite "stress": -tse=stress)
+# Exit status: 0 every mutant caught, 1 some survived (or were not applied), 2 setup error
+# The first run builds the whole tree (long on a shared machine); later runs
+# rebuild only what changed. Not part of the default ctest: configure with
+# -DAMPLE_MUTANTS=ON to get the CTest test "mutants" (label mutants).
+# Documented in docs/structure.md, "Mutation check".
+#--------------------------------------------------------------------------
+set -u
+
+# name | file | sed expression (extended regex, | is not used inside)
+MUTANTS=(
+  # issue 10 item 7: the seven that survived the review
+  "compaction-vp|setups/compaction.cpp|s/\* mp\.vp0;/* mp.vp;/"
+  "vtk-vm-no-2|plotting/makeVtkMP.cpp|s/\+ 2 \* mp\.sig\.tail<3>\(\)/+ mp.sig.tail<3>()/"
+  "vtk-szz-sxy-swap|plotting/makeVtkMP.cpp|s/\"sigma_zz\", \"sigma_xy\"/\"sigma_xy\", \"sigma_zz\"/"
+  "restore-kirchhoff|ample/loadSteps.cpp|s/\.Ksig \/ mp\.Fn\.determinant\(\)/.Ksig/"
+  "shear-nu-default|setups/shear.cpp|s/setDefault\(P, \"nu\", 0\.3\)/setDefault(P, \"nu\", 0.25)/"
+  "stretch-E-default|setups/stretch.cpp|s/setDefault\(P, \"E\", 1000\)/setDefault(P, \"E\", 1100)/"
+  "cli-unknown-unnamed|ample/cli.cpp|s/\"unknown parameter '\" \+ name \+ \"' for setup/\"unknown parameter for setup/"
+  # a handful of others
+  "body-force-sign|ample/detExtForce.cpp|s/Vector2d\(0\.0, -g\)/Vector2d(0.0, g)/"
+  "vmconst-rho-no-2|constitutive/VMconst.cpp|s/\+ 2\.0 \* s\.tail<3>\(\)/+ s.tail<3>()/"
+  "cauchy-no-J|ample/detMPs.cpp|s/cm\.Ksig \/ mp\.F\.determinant\(\)/cm.Ksig/"
+  "uii-as-fii|ample/updateDomain.cpp|s/Vector2d\(U\(0, 0\), U\(1, 1\)\)/Vector2d(F(0, 0), F(1, 1))/"
+  "eq35-denominator|ample/ample.cpp|s/\(\(fext \+ frct\)\.array\(\)/((fext).array()/"
+  "hooke-shear-G|constitutive/Hooke3d.cpp|s/E \/ \(2\.0 \* \(1\.0 \+ nu\)\)/E \/ (1.0 + nu)/"
+)
+
+SRC=$(cd "$(dirname "$0")/.." && pwd)
+WORK=${AMPLE_MUTANTS_DIR:-/tmp/ample-mutants-${USER:-$(id -u)}}
+FILTER=${AMPLE_MUTANTS_TESTS:--tse=stress}
+TESTS_REV=""
+SELECT=()
+while [ $# -gt 0 ]; do
+  case "$1" in
+    --list) for m in "${MUTANTS[@]}"; do IFS='|' read -r n f e <<<"$m"; printf '%-22s %-28s %s\n' "$n" "$f" "$e"; done; exit 0 ;;
+    --tests-rev) TESTS_REV=$2; shift 2 ;;
+    -h|--help) sed -n '2,28p' "$0"; exit 0 ;;
+    *) SELECT+=("$1"); shift ;;
+  esac
+done
+
+mkdir -p "$WORK/src" "$WORK/build" || exit 2
+# copy the tree: a file is rewritten only when its content differs, so that the
+# build folder sees new times on changed files only (no rsync needed)
+sync_tree() {
+  local from=$1 f
+  (cd "$from" && find . -path ./build -prune -o -name .git -prune -o -type f -print) |
+    while read -r f; do
+      mkdir -p "$WORK/src/$(dirname "$f")"
+      cmp -s "$from/$f" "$WORK/src/$f" || cp "$from/$f" "$WORK/src/$f"
+    done
+}
+sync_tree "$SRC"
+if [ -n "$TESTS_REV" ]; then        # the test folder of another revision
+  tmp=$(mktemp -d)
+  git -C "$SRC" archive "$TESTS_REV" tests | tar -x -C "$tmp" || exit 2
+  for f in "$WORK"/src/tests/test_*.cpp; do   # test files the revision does not have
+    [ -e "$tmp/tests/$(basename "$f")" ] || rm -f "$f"
+  done
+  (cd "$tmp" && find tests -type f) | while read -r f; do
+    cmp -s "$tmp/$f" "$WORK/src/$f" || cp "$tmp/$f" "$WORK/src/$f"
+  done
+  rm -rf "$tmp"
+fi
+
+build() {
+  cmake --build "$WORK/build" -j1 --target ample ample_tests >"$WORK/build.log" 2>&1
+}
+runtests() {
+  (cd "$WORK/build/tests" && timeout 1800 ./ample_tests $FILTER >"$WORK/tests.log" 2>&1)
+}
+
+if [ ! -f "$WORK/build/CMakeCache.txt" ]; then
+  cmake -S "$WORK/src" -B "$WORK/build" -DCMAKE_BUILD_TYPE=Release >"$WORK/configure.log" 2>&1 ||
+    { echo "configure failed: $WORK/configure.log"; exit 2; }
+fi
+echo "mutation check: tree $SRC${TESTS_REV:+ (tests of $TESTS_REV)}, work folder $WORK, tests: $FILTER"
+build || { echo "the unmutated tree does not build: $WORK/build.log"; exit 2; }
+runtests || { echo "the unmutated tree fails its tests: $WORK/tests.log"; exit 2; }
+echo "unmutated tree: tests pass"
+
+status=0
+for m in "${MUTANTS[@]}"; do
+  IFS='|' read -r name file expr <<<"$m"
+  if [ ${#SELECT[@]} -gt 0 ] && [[ ! " ${SELECT[*]} " == *" $name "* ]]; then continue; fi
+  target="$WORK/src/$file"
+  cp "$target" "$WORK/original"
+  sed -E -i "$expr" "$target"
+  if cmp -s "$target" "$WORK/original"; then
+    printf '%-22s NOT APPLIED (pattern not found in %s)\n' "$name" "$file"
+    status=1
+    continue
+  fi
+  start=$(date +%s)
+  detail=""
+  if ! build; then
+    verdict="BUILD-ERROR"
+    status=1
+  elif runtests; then
+    verdict="SURVIVED"
+    status=1
+  else
+    verdict="caught"
+    detail=$(grep -o 'TEST CASE:  .*' "$WORK/tests.log" | sed 's/TEST CASE:  //' | sort -u | head -3 | paste -sd ';' -)
+  fi
+  cp "$WORK/original" "$target"   # restored with a new time: it recompiles next time
+  printf '%-22s %-11s %5ss  %s\n' "$name" "$verdict" "$(( $(date +%s) - start ))" "$detail"
+done
+build >/dev/null 2>&1   # leave the build folder matching the unmutated tree
+exit $status
