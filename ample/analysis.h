@@ -4,10 +4,13 @@
 // Seed 002 sec 4: what setupGrid returns (the mesh and mpData of tables 3-4,
 // the load steps, gravity and the Newton-Raphson settings), with the
 // formulation and domain update of seed 000, the two remedies (off by
-// default) and a setup's optional hooks at the start and end of a load step.
+// default), the implicit boundaries of seed 003 (none by default: nothing
+// changes and nothing costs) and a setup's optional hooks at the start and
+// end of a load step.
 // Data only: the bottom layer with mpData.h (docs/structure.md).
 //--------------------------------------------------------------------------
 #pragma once
+#include "boundary.h"
 #include "mpData.h"
 #include <functional>
 #include <string>
@@ -29,6 +32,7 @@ struct Analysis {
   int ghostFrom = 0;                  // first load step the penalty was needed (0: not yet)
   Formulation formulation = Formulation::UL;        // frame of equilibrium (seed 000)
   DomainUpdate domainUpdate = DomainUpdate::Uii;    // GIMP domain update (seed 002 eq 34)
+  std::vector<Boundary> boundaries;                 // implicit boundaries (seed 003); empty: none
   Eigen::VectorXd frct;                             // reactions of the last converged step
   Eigen::VectorXd uvw;                              // its converged displacement increment
   // optional work of a setup at the start / end of each load step (nullptr: none),

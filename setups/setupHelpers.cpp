@@ -5,7 +5,10 @@
 //--------------------------------------------------------------------------
 #include "setupHelpers.h"
 #include "ample/detMpPos.h"
+#include "ample/errors.h"
 #include "ample/shapefunc.h"
+#include <cmath>
+#include <string>
 
 namespace ample {
 
@@ -21,35 +24,106 @@ Analysis baseAnalysis(const Params& P) {
   return an;
 }
 
-void fillBlock(std::vector<MaterialPoint>& mpData, const Vector2d& corner, int nelsx, int nelsy,
-               const Vector2d& h, const Params& P, double rho) {
-  const int mp = int(get(P, "mp"));
-  mpData.reserve(mpData.size() + size_t(nelsx) * nelsy * mp * mp);  // no growth by doubling
+namespace {
+// one point of fillBlock at x with domain half lengths lp0 (volume 4 lp0_x lp0_y)
+MaterialPoint blockPoint(const Vector2d& x, const Vector2d& lp0, const Params& P, double rho) {
+  MaterialPoint pt;
+  pt.mpType = MpType(int(get(P, "mpType")));
+  pt.cmType = CmType(int(get(P, "cmType")));
+  pt.mpC = x;
+  pt.X0 = pt.mpC;
+  pt.lp0 = lp0;
+  pt.vp0 = pt.vp = 4.0 * pt.lp0(0) * pt.lp0(1);
+  pt.st0 = pt.st = (2.0 * pt.lp0).asDiagonal();      // CPDI1 domain vectors s, t
+  for (int c = 0; c < 4; ++c)                         // rectangle corners (CPDI2)
+    pt.xc.col(c) = pt.mpC + Vector2d((c == 1 || c == 2) ? pt.lp0(0) : -pt.lp0(0),
+                                     (c >= 2) ? pt.lp0(1) : -pt.lp0(1));
+  if (pt.mpType == MpType::MPM) pt.lp0.setZero();  // standard MPM carries no domain
+  pt.lp = pt.lp0;
+  pt.mpM = rho * pt.vp0;
+  pt.mCst << get(P, "E"), get(P, "nu"), get(P, "rhoY");
+  return pt;
+}
+
+// calls point(x, lp0) for the mp x mp points of every cell of the block, in fillBlock's order
+void forBlockPoints(const Vector2d& corner, int nelsx, int nelsy, const Vector2d& h, int mp,
+                    const std::function<void(const Vector2d& x, const Vector2d& lp0)>& point) {
   const Eigen::MatrixX2d mpPos = detMpPos(mp);
   for (int ey = 0; ey < nelsy; ++ey)
     for (int ex = 0; ex < nelsx; ++ex) {
       const Vector2d c0 = corner + Vector2d(ex * h(0), ey * h(1));  // cell lower-left corner
       Eigen::Matrix<double, 4, 2> eC;                              // cell corner coordinates
       eC << c0(0), c0(1), c0(0) + h(0), c0(1), c0(0) + h(0), c0(1) + h(1), c0(0), c0(1) + h(1);
-      for (int q = 0; q < mpPos.rows(); ++q) {
-        MaterialPoint pt;
-        pt.mpType = MpType(int(get(P, "mpType")));
-        pt.cmType = CmType(int(get(P, "cmType")));
-        pt.mpC = (shapefunc(mpPos.row(q).transpose()).transpose() * eC).transpose();
-        pt.X0 = pt.mpC;
-        pt.lp0 = h / (2.0 * mp);
-        pt.vp0 = pt.vp = 4.0 * pt.lp0(0) * pt.lp0(1);
-        pt.st0 = pt.st = (2.0 * pt.lp0).asDiagonal();      // CPDI1 domain vectors s, t
-        for (int c = 0; c < 4; ++c)                         // rectangle corners (CPDI2)
-          pt.xc.col(c) = pt.mpC + Vector2d((c == 1 || c == 2) ? pt.lp0(0) : -pt.lp0(0),
-                                           (c >= 2) ? pt.lp0(1) : -pt.lp0(1));
-        if (pt.mpType == MpType::MPM) pt.lp0.setZero();  // standard MPM carries no domain
-        pt.lp = pt.lp0;
-        pt.mpM = rho * pt.vp0;
-        pt.mCst << get(P, "E"), get(P, "nu"), get(P, "rhoY");
-        mpData.push_back(pt);
-      }
+      for (int q = 0; q < mpPos.rows(); ++q)
+        point(Vector2d((shapefunc(mpPos.row(q).transpose()).transpose() * eC).transpose()),
+              Vector2d(h / (2.0 * mp)));
     }
+}
+}  // namespace
+
+void fillBlock(std::vector<MaterialPoint>& mpData, const Vector2d& corner, int nelsx, int nelsy,
+               const Vector2d& h, const Params& P, double rho) {
+  const int mp = int(get(P, "mp"));
+  mpData.reserve(mpData.size() + size_t(nelsx) * nelsy * mp * mp);  // no growth by doubling
+  forBlockPoints(corner, nelsx, nelsy, h, mp, [&](const Vector2d& x, const Vector2d& lp0) {
+    mpData.push_back(blockPoint(x, lp0, P, rho));
+  });
+}
+
+Boundary& addBoundary(Analysis& an, std::vector<Vector2d> x, std::vector<BoundaryType> type,
+                      double deltaOverH, SolidSide solid) {
+  if (x.size() < 2) throw InputError("addBoundary: a boundary needs at least two points");
+  if (type.size() != x.size() - 1)
+    throw InputError("addBoundary: one type per segment (" + std::to_string(x.size() - 1) +
+                     " segments, " + std::to_string(type.size()) + " types)");
+  const double h = an.mesh.h.minCoeff();
+  if (!(h > 0)) throw InputError("addBoundary: make the mesh first (delta = deltaOverH h)");
+  for (size_t s = 0; s + 1 < x.size(); ++s)
+    if ((x[s + 1] - x[s]).norm() <= 1e-12 * h)
+      throw InputError("addBoundary: segment " + std::to_string(s) + " has zero length");
+  Boundary b;
+  b.x = std::move(x);
+  b.type = std::move(type);
+  b.solid = solid;
+  b.delta = deltaOverH * h;
+  an.boundaries.push_back(std::move(b));
+  return an.boundaries.back();
+}
+
+Boundary& addBoundary(Analysis& an, std::vector<Vector2d> x, BoundaryType type,
+                      double deltaOverH, SolidSide solid) {
+  const size_t nSeg = x.size() < 2 ? 0 : x.size() - 1;
+  return addBoundary(an, std::move(x), std::vector<BoundaryType>(nSeg, type), deltaOverH, solid);
+}
+
+Polygon solidPolygon(const std::vector<Boundary>& boundaries) {
+  Polygon poly;
+  for (const Boundary& b : boundaries)
+    for (const Vector2d& p : b.x)
+      if (poly.empty() || (p - poly.back()).norm() > 0.0) poly.push_back(p);  // joints once
+  if (poly.size() > 1 && poly.front() == poly.back()) poly.pop_back();  // closed: not twice
+  return poly;
+}
+
+void fillPolygon(std::vector<MaterialPoint>& mpData, const Vector2d& corner, int nelsx,
+                 int nelsy, const Vector2d& h, const Params& P, double rho,
+                 const Polygon& solid) {
+  constexpr double full = 1.0 - 1e-12, none = 1e-12;  // fractions of the domain inside
+  const int mp = int(get(P, "mp"));
+  forBlockPoints(corner, nelsx, nelsy, h, mp, [&](const Vector2d& x, const Vector2d& lp0) {
+    Polygon local = solid;  // the solid about the point: the area keeps its digits
+    for (Vector2d& p : local) p -= x;
+    const Polygon square = {{-lp0(0), -lp0(1)}, {lp0(0), -lp0(1)}, {lp0(0), lp0(1)},
+                            {-lp0(0), lp0(1)}};
+    const AreaCentroid in = polygonArea(clipPolygon(local, square));
+    const double A = 4.0 * lp0(0) * lp0(1), frac = std::abs(in.area) / A;
+    if (frac <= none) return;                                           // wholly outside: removed
+    if (frac >= full) { mpData.push_back(blockPoint(x, lp0, P, rho)); return; }  // wholly inside
+    MaterialPoint pt = blockPoint(x + in.centroid, lp0 * std::sqrt(frac), P, rho);  // truncated
+    pt.vp0 = pt.vp = frac * A;  // the area inside the solid
+    pt.mpM = rho * pt.vp0;
+    mpData.push_back(pt);
+  });
 }
 
 void fixDofs(Mesh& mesh, int i, const std::function<bool(double, double)>& where,

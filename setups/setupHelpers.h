@@ -5,12 +5,27 @@
 // cells (detMpPos local positions mapped by shapefunc), cell by cell (x
 // fastest); each gets the domain half lengths h/(2 mp) (GIMP; 0 for MPM),
 // volume (h_x/mp)(h_y/mp) (unit thickness) and mass rho V.
+// fillPolygon (seed 003 sec 4, fig 4): the same points over the block, then
+// each point's square domain is clipped by the solid polygon (clipPolygon):
+// wholly outside (less than 1e-12 of it inside): removed; wholly inside (more
+// than 1 - 1e-12): kept as fillBlock makes it; otherwise truncated: volume =
+// the area inside, position = the centroid of that area, half lengths scaled
+// by sqrt(area fraction) (so 4 lp_x lp_y = V still) about the new position.
+// addBoundary: an implicit boundary (boundary.h) with one type for every
+// segment or one per segment, band width delta = deltaOverH h (h the smaller
+// spacing; seed 003: 1e-6), the solid on the left by default; returns it so
+// that a setup can set du. solidPolygon: the polygon round the solid, the
+// points of the boundaries in their order (a gap between two boundaries is a
+// free edge of the solid), so a setup lists them anticlockwise round it.
 // Inputs:  block corner (x0, y0), its cells (nelsx, nelsy), spacing h,
-//          parameters mp, mpType, cmType, E, nu, rhoY · density rho
-// Outputs: points appended to mpData; fixDofs adds Dirichlet conditions
-// Tests:   tests/test_ample.cpp (setups run), tests/test_detMPs.cpp
+//          parameters mp, mpType, cmType, E, nu, rhoY · density rho · solid polygon
+// Outputs: points appended to mpData; fixDofs adds Dirichlet conditions;
+//          addBoundary appends to an.boundaries
+// Tests:   tests/test_ample.cpp (setups run), tests/test_detMPs.cpp,
+//          tests/test_boundary.cpp (fillPolygon, addBoundary, solidPolygon)
 //--------------------------------------------------------------------------
 #pragma once
+#include "ample/clipPolygon.h"
 #include "setups.h"
 #include <functional>
 
@@ -22,6 +37,22 @@ Analysis baseAnalysis(const Params& P);
 
 void fillBlock(std::vector<MaterialPoint>& mpData, const Vector2d& corner, int nelsx, int nelsy,
                const Vector2d& h, const Params& P, double rho);
+
+// fillBlock's points, with those outside `solid` removed and those cut by it truncated
+void fillPolygon(std::vector<MaterialPoint>& mpData, const Vector2d& corner, int nelsx,
+                 int nelsy, const Vector2d& h, const Params& P, double rho,
+                 const Polygon& solid);
+
+// an implicit boundary through the points x, e.g.
+//   addBoundary(an, {{0, 0}, {1, 0.5}}, BoundaryType::Roller);
+//   addBoundary(an, {{1, 1}, {0, 1}}, BoundaryType::Prescribed).du = {{0, -0.05}};
+Boundary& addBoundary(Analysis& an, std::vector<Vector2d> x, BoundaryType type,
+                      double deltaOverH = 1e-6, SolidSide solid = SolidSide::Left);
+Boundary& addBoundary(Analysis& an, std::vector<Vector2d> x, std::vector<BoundaryType> type,
+                      double deltaOverH = 1e-6, SolidSide solid = SolidSide::Left);
+
+// the polygon round the solid: the points of the boundaries, in order
+Polygon solidPolygon(const std::vector<Boundary>& boundaries);
 
 // constrain direction i (0 = x, 1 = y) of every node where `where(X, Y)` holds
 void fixDofs(Mesh& mesh, int i, const std::function<bool(double, double)>& where,
