@@ -117,9 +117,13 @@ void fillPolygon(std::vector<MaterialPoint>& mpData, const Vector2d& corner, int
                             {-lp0(0), lp0(1)}};
     const AreaCentroid in = polygonArea(clipPolygon(local, square));
     const double A = 4.0 * lp0(0) * lp0(1), frac = std::abs(in.area) / A;
-    if (frac <= none) return;                                           // wholly outside: removed
-    if (frac >= full) { mpData.push_back(blockPoint(x, lp0, P, rho)); return; }  // wholly inside
-    MaterialPoint pt = blockPoint(x + in.centroid, lp0 * std::sqrt(frac), P, rho);  // truncated
+    if (frac <= none) return;  // wholly outside: removed
+    if (frac >= full) {        // wholly inside: fillBlock's point
+      mpData.push_back(blockPoint(x, lp0, P, rho));
+      return;
+    }
+    // truncated: at the centroid of the part inside, half lengths scaled to its area
+    MaterialPoint pt = blockPoint(x + in.centroid, lp0 * std::sqrt(frac), P, rho);
     pt.vp0 = pt.vp = frac * A;  // the area inside the solid
     pt.mpM = rho * pt.vp0;
     mpData.push_back(pt);

@@ -44,6 +44,10 @@ MUTANTS=(
   "uii-as-fii|ample/updateDomain.cpp|s/Vector2d\(U\(0, 0\), U\(1, 1\)\)/Vector2d(F(0, 0), F(1, 1))/"
   "eq35-denominator|ample/ample.cpp|s/\(\(fext \+ r\)\.array\(\)/((fext).array()/"
   "hooke-shear-G|constitutive/Hooke3d.cpp|s/E \/ \(2\.0 \* \(1\.0 \+ nu\)\)/E \/ (1.0 + nu)/"
+  # issue 11: implicit boundaries (tests/test_boundary.cpp)
+  "eq16-slope-no-2|ample/dirichletBand.cpp|s/return 2\.0 \/ delta \* \(1\.0 - phi \/ delta\);/return 1.0 \/ delta * (1.0 - phi \/ delta);/"
+  "ib-centroid-not-moved|setups/setupHelpers.cpp|s/blockPoint\(x \+ in\.centroid, /blockPoint(x, /"
+  "cutcells-wrong-side|ample/cutCells.cpp|s/\(n\(k\) > 0 \? 0 : 1\)/(n(k) > 0 ? 1 : 0)/"
 )
 
 SRC=$(cd "$(dirname "$0")/.." && pwd)
