@@ -1,16 +1,102 @@
 //--------------------------------------------------------------------------
 // detMPs — internal force and stiffness of all material points (the point loop)
 //--------------------------------------------------------------------------
-// Seed 002 eqs 5-18, 30-31. See detMPs.h for the steps, inputs and outputs.
+// Seed 002 eqs 5-18, 30-31; seed 000 eqs 18-23 (PC); seed 003 eqs 2-3, 8-10
+// (SS). See detMPs.h for the steps, inputs and outputs.
 //--------------------------------------------------------------------------
 #include "detMPs.h"
 #include "constitutive/Hooke3d.h"
 #include "constitutive/VMconst.h"
 #include "formPCstiff.h"
+#include "formULstiff.h"
 #include "stiffnessPattern.h"
 #include "tensorOps.h"
 
 namespace ample {
+
+namespace {
+
+struct PointTerms {                          // what eqs 14 and 16 need of one point
+  Eigen::Matrix4d A;                         // in-plane tangent, (i,j) -> 2i+j
+  Eigen::Matrix2d Sf;                        // stress paired with dSx
+  Eigen::Matrix<double, nD, MAXN> dSx;       // basis gradients
+  double Vp;                                 // volume
+};
+
+// start + grad du, grad du = sum_v du_v (x) dS_v/dX~ (in-plane block): dF with
+// start = I (eq 17); grad du itself with start = 0 (SS: no 1 + small - 1)
+Matrix3d plusGradDu(Matrix3d start, const Eigen::VectorXd& uvw, const MaterialPoint& mp) {
+  for (int v = 0; v < mp.nn; ++v)
+    for (int i = 0; i < nD; ++i)
+      for (int j = 0; j < nD; ++j) start(i, j) += uvw(dof(mp.nIN[v], i)) * mp.dSvp(j, v);
+  return start;
+}
+
+ConstOut constitutive(const Vector6d& epsEtr, const MaterialPoint& mp) {  // cmType 1 or 2
+  return (mp.cmType == CmType::Elastic) ? Hooke3d(epsEtr, mp.mCst) : VMconst(epsEtr, mp.mCst);
+}
+
+//--------------------------------------------------------------------------
+// finiteStrainPoint — UL (seed 002 eqs 5-18) or PC (seed 000 eqs 18-23)
+//--------------------------------------------------------------------------
+// Logarithmic elastic strain, Kirchhoff stress tau, sigma = tau / det(F).
+// Writes mp.F, mp.epsE, mp.sig (trial values until the step converges).
+//--------------------------------------------------------------------------
+PointTerms finiteStrainPoint(const Matrix3d& dF, Formulation form, MaterialPoint& mp) {
+  mp.F = dF * mp.Fn;                                            // eq 7
+  const Matrix3d bEn = symExp(2.0 * strainToTensor(mp.epsEn));  // eq 9
+  const Matrix3d BeT = dF * bEn * dF.transpose();               // eq 8
+  const Vector6d epsEtr = tensorToStrain(0.5 * symLog(BeT));    // eq 10
+
+  const ConstOut cm = constitutive(epsEtr, mp);                 // eqs 5, 11
+  mp.epsE = cm.epsE;
+  mp.sig = cm.Ksig / mp.F.determinant();                        // eq 6
+
+  PointTerms t;
+  if (form == Formulation::UL) {                                // seed 002 eqs 14-18
+    t.A = formULstiff2D(mp.F, cm.D, mp.sig, BeT);               // seed 000 eq A.1
+    const Eigen::Matrix2d iF = dF.topLeftCorner<2, 2>().inverse();
+    t.dSx.leftCols(mp.nn) = iF.transpose() * mp.dSvp.leftCols(mp.nn);  // eq 18: dS/dx
+    t.Vp = dF.determinant() * mp.vp;                            // eq 15
+    t.Sf = stressToTensor(mp.sig).topLeftCorner<2, 2>();
+  } else {                                                      // seed 000 eqs 18-23
+    const double Jn = mp.Fn.determinant();
+    const Matrix3d tau = stressToTensor(cm.Ksig);
+    t.A = formPCstiff2D(dF, Jn, cm.D, tau, bEn, BeT);           // seed 000 eq A.3
+    t.dSx.leftCols(mp.nn) = mp.dSvp.leftCols(mp.nn);            // dS/dX~, no mapping
+    t.Vp = mp.vp;                                               // V_p^n (eq 22)
+    t.Sf = (tau * dF.inverse().transpose() / Jn).topLeftCorner<2, 2>();  // P~ (eq 18)
+  }
+  return t;
+}
+
+//--------------------------------------------------------------------------
+// smallStrainPoint — infinitesimal strain, linear elasticity (seed 003 sec 2)
+//--------------------------------------------------------------------------
+// eps = eps_n + sym(grad du), grad du = sum_v du_v (x) dS_v/dX~ with the basis
+// gradients of the start of the step (seed 003 eqs 2, 10); sigma = D eps (eq 3; cmType VM: the
+// same radial return on the small strain); k_p = B' D B V_p, f_p = B' sigma V_p
+// (eqs 8-9) with B, V_p those of the start of the step. F stays I (no
+// configuration change), so V_p = det(F) V_p0 = V_p0 in updateMPs.
+// Writes mp.F = I, mp.epsE, mp.sig (Cauchy).
+//--------------------------------------------------------------------------
+PointTerms smallStrainPoint(const Matrix3d& H, MaterialPoint& mp) {  // H = grad du
+  const Vector6d epsTr = mp.epsEn + tensorToStrain(0.5 * (H + H.transpose()));  // eqs 2, 10
+
+  const ConstOut cm = constitutive(epsTr, mp);                  // eq 3
+  mp.F = Matrix3d::Identity();
+  mp.epsE = cm.epsE;
+  mp.sig = cm.Ksig;                                             // Cauchy stress
+
+  PointTerms t;
+  t.A = elasticBlock2D(cm.D);                                   // D (eq 8)
+  t.dSx.leftCols(mp.nn) = mp.dSvp.leftCols(mp.nn);              // B: dS/dX~ (eq 6)
+  t.Vp = mp.vp;                                                 // V_p = V_p0
+  t.Sf = stressToTensor(mp.sig).topLeftCorner<2, 2>();          // sigma (eq 9)
+  return t;
+}
+
+}  // namespace
 
 DetMPsOut detMPs(const Eigen::VectorXd& uvw, std::vector<MaterialPoint>& mpData,
                  Formulation form, SpMat pattern) {
@@ -20,38 +106,10 @@ DetMPsOut detMPs(const Eigen::VectorXd& uvw, std::vector<MaterialPoint>& mpData,
   out.Kt.coeffs().setZero();                                    // the pattern's values only
 
   for (MaterialPoint& mp : mpData) {
-    Matrix3d dF = Matrix3d::Identity();                           // eq 17
-    for (int v = 0; v < mp.nn; ++v)
-      for (int i = 0; i < nD; ++i)
-        for (int j = 0; j < nD; ++j) dF(i, j) += uvw(dof(mp.nIN[v], i)) * mp.dSvp(j, v);
-    mp.F = dF * mp.Fn;                                            // eq 7
-    const Matrix3d bEn = symExp(2.0 * strainToTensor(mp.epsEn));  // eq 9
-    const Matrix3d BeT = dF * bEn * dF.transpose();               // eq 8
-    const Vector6d epsEtr = tensorToStrain(0.5 * symLog(BeT));    // eq 10
-
-    const ConstOut cm = (mp.cmType == CmType::Elastic) ? Hooke3d(epsEtr, mp.mCst)
-                                                       : VMconst(epsEtr, mp.mCst);
-    mp.epsE = cm.epsE;
-    mp.sig = cm.Ksig / mp.F.determinant();                        // eq 6
-
-    Eigen::Matrix4d A;                                            // in-plane tangent, (i,j) -> 2i+j
-    Eigen::Matrix2d Sf;                                           // stress paired with dSx
-    Eigen::Matrix<double, nD, MAXN> dSx;                          // basis gradients
-    double Vp;                                                    // volume
-    if (form == Formulation::UL) {                                // seed 002 eqs 14-18
-      A = formULstiff2D(mp.F, cm.D, mp.sig, BeT);                 // seed 000 eq A.1
-      const Eigen::Matrix2d iF = dF.topLeftCorner<2, 2>().inverse();
-      dSx.leftCols(mp.nn) = iF.transpose() * mp.dSvp.leftCols(mp.nn);  // eq 18: dS/dx
-      Vp = dF.determinant() * mp.vp;                              // eq 15
-      Sf = stressToTensor(mp.sig).topLeftCorner<2, 2>();
-    } else {                                                      // seed 000 eqs 18-23
-      const double Jn = mp.Fn.determinant();
-      const Matrix3d tau = stressToTensor(cm.Ksig);
-      A = formPCstiff2D(dF, Jn, cm.D, tau, bEn, BeT);             // seed 000 eq A.3
-      dSx.leftCols(mp.nn) = mp.dSvp.leftCols(mp.nn);              // dS/dX~, no mapping
-      Vp = mp.vp;                                                 // V_p^n (eq 22)
-      Sf = (tau * dF.inverse().transpose() / Jn).topLeftCorner<2, 2>();  // P~ (eq 18)
-    }
+    const PointTerms t =
+        (form == Formulation::SS)
+            ? smallStrainPoint(plusGradDu(Matrix3d::Zero(), uvw, mp), mp)              // grad du
+            : finiteStrainPoint(plusGradDu(Matrix3d::Identity(), uvw, mp), form, mp);  // dF, eq 17
 
     int d[nD * MAXN];                                             // the point's dofs, ascending
     for (int a = 0; a < mp.nn; ++a)
@@ -61,14 +119,14 @@ DetMPsOut detMPs(const Eigen::VectorXd& uvw, std::vector<MaterialPoint>& mpData,
     for (int a = 0; a < mp.nn; ++a)
       for (int i = 0; i < nD; ++i) {
         double fa = 0.0;                                          // eq 16
-        for (int j = 0; j < nD; ++j) fa += dSx(j, a) * Sf(i, j);
-        out.fint(d[nD * a + i]) += fa * Vp;
+        for (int j = 0; j < nD; ++j) fa += t.dSx(j, a) * t.Sf(i, j);
+        out.fint(d[nD * a + i]) += fa * t.Vp;
         for (int b = 0; b < mp.nn; ++b)
           for (int k = 0; k < nD; ++k) {
             double kab = 0.0;
             for (int j = 0; j < nD; ++j)
-              for (int l = 0; l < nD; ++l) kab += dSx(j, a) * A(2 * i + j, 2 * k + l) * dSx(l, b);
-            ke(nD * a + i, nD * b + k) = kab * Vp;
+              for (int l = 0; l < nD; ++l) kab += t.dSx(j, a) * t.A(2 * i + j, 2 * k + l) * t.dSx(l, b);
+            ke(nD * a + i, nD * b + k) = kab * t.Vp;
           }
       }
     addToPattern(out.Kt, d, ne, ke.topLeftCorner(ne, ne));      // eq 30

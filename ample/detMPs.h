@@ -14,6 +14,10 @@
 // previously converged formulation of seed 000 sec 5 is used instead:
 //   k_p = [dS/dX~]' A~ [dS/dX~] V_p^n, f_p = [dS/dX~]' P~ V_p^n, P~ = tau dF^-T / Jn
 //   (eqs 18, 21-23, A~ from formPCstiff); both give the same equilibrium.
+// With form = SS the small-strain method of seed 003 sec 2 (no dF, no log):
+//   eps = eps_n + sym(grad du), grad du = sum du (x) dS/dX~;  sigma = D eps (eqs 2-3, 10)
+//   k_p = B' D B V_p0, f_p = B' sigma V_p0, B from dS/dX~   (eqs 6, 8-9)
+//   and F stays I, so the volume stays V_p0 (updateMPs: V_p = det(F) V_p0).
 // Plane strain: only the in-plane displacement gradient enters; F, b_e and
 // stress are 3D.
 // Kt is assembled into `pattern`, the sparsity of the load step (the points
@@ -22,7 +26,7 @@
 // Inputs:  uvw (nDoF) displacement increment of the step · mpData · form ·
 //          pattern (optional: the Kt of an earlier pass of the same step)
 // Outputs: fint (nDoF) · Kt (nDoF x nDoF) · mpData (F, sig, epsE) updated
-// Tests:   tests/test_detMPs.cpp
+// Tests:   tests/test_detMPs.cpp, tests/test_smallStrain.cpp (SS)
 //--------------------------------------------------------------------------
 #pragma once
 #include "stiffnessPattern.h"

@@ -27,7 +27,8 @@ constexpr int MAXE = 9;      // most cells one point domain may overlap (3 x 3)
 
 enum class MpType { MPM = 1, GIMP = 2, CPDI1 = 3, CPDI2 = 4 };  // seed 002: mpType (+ seed 001)
 enum class CmType { Elastic = 1, VonMises = 2 };                 // seed 002: cmType
-enum class Formulation { UL = 1, PC = 2 };  // updated / previously converged Lagrangian (seed 000)
+enum class Formulation { UL = 1, PC = 2, SS = 3 };  // updated / previously converged Lagrangian
+                                                    // (seed 000), small strain (seed 003 sec 2)
 enum class DomainUpdate {                   // GIMP domain updating, seed 000 sec 6.4, table 2
   None = 0, DetF = 1, Fii = 2, Uii = 3, Corner = 4, FiiVol = 5, FiiVolInc = 6
 };  //  -     eq 32     eq 33    eq 34    eqs 35-37   eq 38      eq 39
@@ -46,10 +47,10 @@ struct MaterialPoint {
   std::array<double, MAXN> Svp{};          // basis functions S_vp
   Eigen::Matrix<double, nD, MAXN> dSvp = Eigen::Matrix<double, nD, MAXN>::Zero();  // dS_vp/dX~
   Matrix3d Fn = Matrix3d::Identity();      // deformation gradient at start of load step
-  Matrix3d F = Matrix3d::Identity();       // current deformation gradient
+  Matrix3d F = Matrix3d::Identity();       // current deformation gradient (SS: stays I)
   Vector6d sig = Vector6d::Zero();         // Cauchy stress
-  Vector6d epsEn = Vector6d::Zero();       // elastic log strain at start of load step
-  Vector6d epsE = Vector6d::Zero();        // current elastic log strain
+  Vector6d epsEn = Vector6d::Zero();       // elastic log strain at start of load step (SS: small)
+  Vector6d epsE = Vector6d::Zero();        // current elastic log strain (SS: small strain)
   Vector3d mCst = Vector3d::Zero();        // material constants [E, nu, rho_y]
   Vector2d fp = Vector2d::Zero();          // point force carried by the point (total)
   Vector2d u = Vector2d::Zero();           // total displacement

@@ -75,8 +75,9 @@ Params commonParams(int lstps) {
       Param("mpType", 2).choice(1, {"MPM", "GIMP", "CPDI1", "CPDI2"}).help("material point type"),
       Param("mp", 2).integer(1, 20).help("material points per cell in each direction"),
       Param("cmType", 1).choice(1, {"elastic", "VM"}).help("constitutive model"),
-      Param("formulation", 1).choice(1, {"UL", "PC"})
-          .help("equilibrium frame: updated or previously converged Lagrangian (seed 000)"),
+      Param("formulation", 1).choice(1, {"UL", "PC", "SS"})
+          .help("equilibrium frame: updated or previously converged Lagrangian (seed 000), or "
+                "small strain with linear kinematics (seed 003 sec 2)"),
       Param("domainUpdate", 3).choice(0, {"none", "detF", "Fii", "Uii", "corner", "FiiVol", "FiiVolInc"})
           .help("GIMP domain update (seed 000 eqs 32-39)"),
       Param("E", 1.0).above(0).help("Young's modulus (Pa)"),
