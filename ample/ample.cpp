@@ -15,7 +15,10 @@
 // failure is named on stderr. Two remedies, off by default: loadSteps.retry is
 // the one line of both in the handler of a failed step (ghost > 0: retry it with
 // the ghost penalty, on from then; substeps > 0: retry it in halves), and
-// addGhostPenalty the one line that applies the penalty in the Newton loop. Every timed call goes through timed(seconds, f,
+// addGhostPenalty the one line that applies the penalty in the Newton loop. The
+// implicit boundaries of seed 003 (ibStiffness.h; none by default: nothing changes)
+// are three named lines: ibStiffness once per step, addImplicitBoundaries after
+// detMPs, moveBoundaries after updateMPs. Every timed call goes through timed(seconds, f,
 // args...) (plotting/runLog.h), which is f(args...) with a stopwatch around it.
 // See ample.h for inputs and outputs.
 //--------------------------------------------------------------------------
@@ -26,6 +29,7 @@
 #include "elemMPinfo.h"
 #include "errors.h"
 #include "ghostPenalty.h"
+#include "ibStiffness.h"
 #include "linSolve.h"
 #include "loadSteps.h"
 #include "plotting/postPro.h"
@@ -89,6 +93,7 @@ void solve(Analysis& an, RunLog& log, const RunOptions& opt) {
     DetMPsOut mps{uvw, timed(T.detMPs, stiffnessPattern, nDoF, mpData)};  // Kt's sparsity, once
     FreeSystem Kff;                                                  // Kt(fd,fd), analysed once
     const SpMat Kgp = ghostPenaltyOf(an);                            // remedy (off: empty)
+    const ImplicitBoundaries ib = ibStiffness(mesh, an.boundaries, mpData, lstp, inc.bcScale(an.lstps));  // seed 003 (none: empty)
     double fErr = 1.0;
     int NRit = 0;
     try {
@@ -98,8 +103,9 @@ void solve(Analysis& an, RunLog& log, const RunOptions& opt) {
         frct += ls.drct;
         mps = timed(T.detMPs, detMPs, uvw, mpData, an.formulation, std::move(mps.Kt));
         addGhostPenalty(Kgp, uvw, mps.Kt, mps.fint);                 // remedy (off: nothing)
+        const Eigen::VectorXd fib = addImplicitBoundaries(ib, uvw, mps.Kt, mps.fint);  // seed 003 (none: 0)
         oobf = fext - mps.fint + frct;                               // eq 31 with reactions
-        fErr = normalisedResidual(oobf, fext, frct, an.frct, NRit);  // eq 35
+        fErr = normalisedResidual(oobf, fext, frct + fib, an.frct, NRit);  // eq 35 (+ IB reactions)
         recordPass(log, mpData, lstp, NRit, fErr, opt.quiet);        // throws on NaN
         NRit++;
       }
@@ -113,6 +119,7 @@ void solve(Analysis& an, RunLog& log, const RunOptions& opt) {
     an.frct = frct;
     an.uvw = uvw;
     timed(T.updateMPs, updateMPs, mesh, uvw, an.domainUpdate, mpData);
+    moveBoundaries(an.boundaries, lstp, inc.bcScale(an.lstps));      // seed 003: prescribed ones move
     if (!inc.last) continue;                                         // (remedy: a first half)
     if (an.afterStep) an.afterStep(an, lstp);                        // setup's hook
     timed(T.postPro, postPro, mesh, mpData, uvw, lstp, opt.vtkEvery, opt.outDir);

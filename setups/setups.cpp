@@ -19,6 +19,7 @@ namespace beam       { Params params(); Analysis setupGrid(const Params&); Resul
 namespace collapse   { Params params(); Analysis setupGrid(const Params&); Results results(const Analysis&, const Params&); }
 namespace shear      { Params params(); Analysis setupGrid(const Params&); Results results(const Analysis&, const Params&); }
 namespace stretch    { Params params(); Analysis setupGrid(const Params&); Results results(const Analysis&, const Params&); }
+namespace ibblock    { Params params(); Analysis setupGrid(const Params&); Results results(const Analysis&, const Params&); }
 
 const std::vector<Setup>& setupsTable() {
   static const std::vector<Setup> table = {
@@ -32,6 +33,8 @@ const std::vector<Setup>& setupsTable() {
        shear::params, shear::setupGrid, shear::results},
       {"stretch", "plane-strain stretch of a von Mises block on a moving grid (seed 001 sec 3.1)",
        stretch::params, stretch::setupGrid, stretch::results},
+      {"ibblock", "contained block compressed through implicit rollers at an angle (seed 003 sec 5.1)",
+       ibblock::params, ibblock::setupGrid, ibblock::results},
   };
   return table;
 }
