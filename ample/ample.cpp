@@ -46,6 +46,7 @@ static void checkAnalysis(const Analysis& an);
 static void startStep(Analysis& an, int lstp, RunLog& log, bool quiet);
 static std::vector<BC> scaled(std::vector<BC> bc, double factor);
 static SpMat ghostPenaltyOf(const Analysis& an);
+static ImplicitBoundaries implicitBoundariesOf(const Analysis& an, const Increment& inc);
 static void recordPass(RunLog& log, const std::vector<MaterialPoint>& mpData, int lstp, int NRit,
                        double fErr, bool quiet);
 static double normalisedResidual(const Eigen::VectorXd& oobf, const Eigen::VectorXd& fext,
@@ -89,11 +90,11 @@ void solve(Analysis& an, RunLog& log, const RunOptions& opt) {
     const Eigen::VectorXd fext = timed(T.detExtForce, detExtForce, nDoF, an.g, mpData) * inc.lf1;
     const std::vector<BC> bc = scaled(mesh.bc, inc.bcScale(an.lstps));  // increments of this step
     const std::vector<int> fd = timed(T.detFDoFs, detFDoFs, mesh, mpData);
-    Eigen::VectorXd uvw = Eigen::VectorXd::Zero(nDoF), frct = uvw, oobf = fext;
+    Eigen::VectorXd uvw = Eigen::VectorXd::Zero(nDoF), frct = uvw, oobf = fext, fib = uvw;
     DetMPsOut mps{uvw, timed(T.detMPs, stiffnessPattern, nDoF, mpData)};  // Kt's sparsity, once
     FreeSystem Kff;                                                  // Kt(fd,fd), analysed once
     const SpMat Kgp = ghostPenaltyOf(an);                            // remedy (off: empty)
-    const ImplicitBoundaries ib = ibStiffness(mesh, an.boundaries, mpData, lstp, inc.bcScale(an.lstps));  // seed 003 (none: empty)
+    const ImplicitBoundaries ib = implicitBoundariesOf(an, inc);     // seed 003 (none: empty)
     double fErr = 1.0;
     int NRit = 0;
     try {
@@ -103,9 +104,9 @@ void solve(Analysis& an, RunLog& log, const RunOptions& opt) {
         frct += ls.drct;
         mps = timed(T.detMPs, detMPs, uvw, mpData, an.formulation, std::move(mps.Kt));
         addGhostPenalty(Kgp, uvw, mps.Kt, mps.fint);                 // remedy (off: nothing)
-        const Eigen::VectorXd fib = addImplicitBoundaries(ib, uvw, mps.Kt, mps.fint);  // seed 003 (none: 0)
+        fib = addImplicitBoundaries(ib, uvw, mps.Kt, mps.fint);      // seed 003 (none: 0)
         oobf = fext - mps.fint + frct;                               // eq 31 with reactions
-        fErr = normalisedResidual(oobf, fext, frct + fib, an.frct, NRit);  // eq 35 (+ IB reactions)
+        fErr = normalisedResidual(oobf, fext, frct + fib, an.frct, NRit);  // eq 35, IB reactions too
         recordPass(log, mpData, lstp, NRit, fErr, opt.quiet);        // throws on NaN
         NRit++;
       }
@@ -116,10 +117,10 @@ void solve(Analysis& an, RunLog& log, const RunOptions& opt) {
       continue;
     }
     recordStep(log, inc, NRit, fErr, true);
-    an.frct = frct;
+    an.frct = frct + fib;                                            // reactions, IB ones too
     an.uvw = uvw;
     timed(T.updateMPs, updateMPs, mesh, uvw, an.domainUpdate, mpData);
-    moveBoundaries(an.boundaries, lstp, inc.bcScale(an.lstps));      // seed 003: prescribed ones move
+    moveBoundaries(an.boundaries, lstp, inc.bcScale(an.lstps));      // seed 003: by their du
     if (!inc.last) continue;                                         // (remedy: a first half)
     if (an.afterStep) an.afterStep(an, lstp);                        // setup's hook
     timed(T.postPro, postPro, mesh, mpData, uvw, lstp, opt.vtkEvery, opt.outDir);
@@ -169,6 +170,12 @@ static SpMat ghostPenaltyOf(const Analysis& an) {
   double E = 0.0;                                                 // the stiffest point's E
   for (const MaterialPoint& mp : an.mpData) E = std::max(E, mp.mCst(0));
   return ghostPenalty(an.mesh, an.ghost, E);
+}
+
+// seed 003: K_IB and f_IB of the implicit boundaries for this step (or its part, the
+// share bcScale of the step's prescribed increments); empty when there are none
+static ImplicitBoundaries implicitBoundariesOf(const Analysis& an, const Increment& inc) {
+  return ibStiffness(an.mesh, an.boundaries, an.mpData, inc.lstp, inc.bcScale(an.lstps));
 }
 
 // one Newton-Raphson pass: residuals.csv row, progress line; a NaN or Inf stops

@@ -19,13 +19,18 @@ void gaussRule(int n, std::vector<double>& x, std::vector<double>& w) {
     double z = std::cos(M_PI * (i + 0.75) / (n + 0.5)), dp = 1.0;
     for (int it = 0; it < 100; ++it) {
       double p0 = 1.0, p1 = z;                         // P_0, P_1, ... P_n by recurrence
-      for (int k = 2; k <= n; ++k) { const double p2 = ((2 * k - 1) * z * p1 - (k - 1) * p0) / k; p0 = p1; p1 = p2; }
+      for (int k = 2; k <= n; ++k) {
+        const double p2 = ((2 * k - 1) * z * p1 - (k - 1) * p0) / k;
+        p0 = p1;
+        p1 = p2;
+      }
       dp = n * (z * p1 - p0) / (z * z - 1.0);
       const double dz = p1 / dp;
       z -= dz;
       if (std::abs(dz) < 1e-16) break;
     }
-    x[i] = 0.5 * (1.0 - z), w[i] = 1.0 / ((1.0 - z * z) * dp * dp);  // mapped to [0, 1]
+    x[i] = 0.5 * (1.0 - z);                                      // mapped to [0, 1]
+    w[i] = 1.0 / ((1.0 - z * z) * dp * dp);
   }
 }
 
@@ -45,8 +50,10 @@ Matrix3d planeStrainC(double E, double nu) {
 Eigen::Matrix<double, 8, 8> ibCellStiffness(const Mesh& mesh, const Boundary& b, const CutCell& c,
                                             const Matrix3d& C) {
   const Vector2d n = inwardNormal(b, c.seg);
-  const bool normalOnly = b.type[c.seg] == BoundaryType::Roller || b.type[c.seg] == BoundaryType::PrescribedNormal;
-  const Eigen::Matrix2d M = normalOnly ? Eigen::Matrix2d(n * n.transpose()) : Eigen::Matrix2d::Identity();
+  const BoundaryType t = b.type[c.seg];
+  const bool normalOnly = t == BoundaryType::Roller || t == BoundaryType::PrescribedNormal;
+  const Eigen::Matrix2d M = normalOnly ? Eigen::Matrix2d(n * n.transpose())
+                                       : Eigen::Matrix2d::Identity();
   const Eigen::Matrix2d A = Eigen::Matrix2d::Identity() - M;      // [D] = A + d M
   const BandIntegrals bi = bandIntegrals(b.delta);
   const double len = (b.x[c.seg + 1] - b.x[c.seg]).norm() * (c.r1 - c.r0);
@@ -56,7 +63,8 @@ Eigen::Matrix<double, 8, 8> ibCellStiffness(const Mesh& mesh, const Boundary& b,
   gaussRule(10, gx, gw);                                          // sec 4: 10 points along t
   Eigen::Matrix<double, 8, 8> K = Eigen::Matrix<double, 8, 8>::Zero();
   for (size_t q = 0; q < gx.size(); ++q) {
-    const Vector2d xi = (pointAt(b, c.seg, c.r0 + gx[q] * (c.r1 - c.r0)) - x0).cwiseQuotient(mesh.h);
+    const Vector2d xb = pointAt(b, c.seg, c.r0 + gx[q] * (c.r1 - c.r0));  // on the boundary
+    const Vector2d xi = (xb - x0).cwiseQuotient(mesh.h);
     Mat38 a, m, g;                                                // the columns a_jl, m_jl, g_jl
     for (int j = 0; j < nen; ++j) {
       const double fx = ca[j][0] * xi(0) + (1 - ca[j][0]) * (1 - xi(0));
@@ -68,8 +76,9 @@ Eigen::Matrix<double, 8, 8> ibCellStiffness(const Mesh& mesh, const Boundary& b,
         g.col(2 * j + l) = eps(fx * fy * M.col(l), n);            // eq 20, times d'
       }
     }
-    const Eigen::Matrix<double, 8, 8> K2 = (bi.dp * a + bi.d_dp * m).transpose() * C * g;  // eq 26
-    K += gw[q] * len * (K2 + K2.transpose() + bi.dp_dp * g.transpose() * C * g);          // eq 27
+    const Eigen::Matrix<double, 8, 8> K2 = (bi.dp * a + bi.d_dp * m).transpose() * C * g;  // 26
+    const Eigen::Matrix<double, 8, 8> K3 = bi.dp_dp * g.transpose() * C * g;               // 27
+    K += gw[q] * len * (K2 + K2.transpose() + K3);
   }
   return K;
 }
@@ -86,15 +95,19 @@ ImplicitBoundaries ibStiffness(const Mesh& mesh, const std::vector<Boundary>& bo
   for (const Boundary& b : boundaries)
     for (const CutCell& c : cutCells(mesh, b)) {
       if (cst[c.cell](2) == 0) continue;                          // no point: nothing to hold
-      const Matrix3d C = planeStrainC(cst[c.cell](0) / cst[c.cell](2), cst[c.cell](1) / cst[c.cell](2));
-      const Eigen::Matrix<double, 8, 8> k = ibCellStiffness(mesh, b, c, C);
-      int d[8];
-      for (int j = 0; j < nen; ++j) d[2 * j] = dof(mesh.etpl(c.cell, j), 0), d[2 * j + 1] = dof(mesh.etpl(c.cell, j), 1);
-      Eigen::Matrix<double, 8, 1> ua;                             // eq 28: u_a on the cell's dofs
+      const Vector3d m = cst[c.cell] / cst[c.cell](2);            // mean E, nu of its points
+      const Eigen::Matrix<double, 8, 8> k = ibCellStiffness(mesh, b, c, planeStrainC(m(0), m(1)));
       const BoundaryType t = b.type[c.seg];
       const bool prescribed = t == BoundaryType::Prescribed || t == BoundaryType::PrescribedNormal;
-      for (int j = 0; j < nen; ++j) ua.segment<2>(2 * j) = prescribed ? Vector2d(share * duAt(b, lstp)) : Vector2d::Zero();
-      const Eigen::Matrix<double, 8, 1> fe = k * ua;
+      const Vector2d ua = prescribed ? Vector2d(share * duAt(b, lstp)) : Vector2d::Zero();
+      int d[8];
+      Eigen::Matrix<double, 8, 1> uae;                            // eq 28: u_a on the cell's dofs
+      for (int j = 0; j < nen; ++j)
+        for (int i = 0; i < nD; ++i) {
+          d[2 * j + i] = dof(mesh.etpl(c.cell, j), i);
+          uae(2 * j + i) = ua(i);
+        }
+      const Eigen::Matrix<double, 8, 1> fe = k * uae;
       for (int r = 0; r < 8; ++r) {
         ib.f(d[r]) += fe(r);
         for (int s = 0; s < 8; ++s) trip.emplace_back(d[r], d[s], k(r, s));
