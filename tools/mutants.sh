@@ -48,6 +48,9 @@ MUTANTS=(
   "eq16-slope-no-2|ample/dirichletBand.cpp|s/return 2\.0 \/ delta \* \(1\.0 - phi \/ delta\);/return 1.0 \/ delta * (1.0 - phi \/ delta);/"
   "ib-centroid-not-moved|setups/setupHelpers.cpp|s/blockPoint\(x \+ in\.centroid, /blockPoint(x, /"
   "cutcells-wrong-side|ample/cutCells.cpp|s/\(n\(k\) > 0 \? 0 : 1\)/(n(k) > 0 ? 1 : 0)/"
+  # K2 with the free part only (int d d' dropped) and K2 without its transpose (tests/test_ibStiffness.cpp)
+  "ib-k2-no-d-dp|ample/ibStiffness.cpp|s/\(bi\.dp \* a \+ bi\.d_dp \* m\)/(bi.dp * a)/"
+  "ib-k2-no-transpose|ample/ibStiffness.cpp|s/K \+= gw\[q\] \* len \* \(K2 \+ K2\.transpose\(\) \+ K3\);/K += gw[q] * len * (K2 + K3);/"
   # formulation=SS (seed 003): grad du as (I + grad du) - I; the volume of the moved configuration
   "ss-grad-via-dF|ample/detMPs.cpp|s/plusGradDu\(Matrix3d::Zero\(\), uvw, mp\), mp\)/plusGradDu(Matrix3d::Identity(), uvw, mp) - Matrix3d::Identity(), mp)/"
   "ss-volume-dF|ample/detMPs.cpp|s/t\.Vp = mp\.vp; +\/\/ V_p = V_p0/t.Vp = (Matrix3d::Identity() + H).determinant() * mp.vp;/"
