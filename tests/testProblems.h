@@ -1,10 +1,12 @@
 // testProblems.h — small problems built in code for the tests (not a test file itself)
 #pragma once
+#include "ample/ample.h"
 #include "ample/detMPs.h"
 #include "ample/elemMPinfo.h"
 #include "ample/formCoord2D.h"
 #include "setups/setupHelpers.h"
 #include "setups/setups.h"
+#include <doctest/doctest.h>
 #include <fstream>
 #include <map>
 #include <sstream>
@@ -12,6 +14,19 @@
 #include <string>
 
 namespace ample::testing {
+
+// a setup run in memory (no files) through all its load steps, with some parameters set;
+// throws what solve throws when a step fails
+inline Analysis runSetup(const std::string& name,
+                         const std::vector<std::pair<std::string, double>>& set, RunLog& log) {
+  const Setup* s = findSetup(name);
+  REQUIRE(s != nullptr);
+  Params P = s->params();
+  for (const auto& kv : set) setDefault(P, kv.first, kv.second);
+  Analysis an = s->setupGrid(P);
+  solve(an, log);
+  return an;
+}
 
 // a 4 x 4 grid of 1 m cells with an mp x mp block of points filling cells [1,3) x [1,3)
 inline Analysis smallBlock(MpType mpType, CmType cmType, int mp = 2) {

@@ -11,17 +11,7 @@
 using namespace ample;
 
 namespace {
-// run a setup in memory (no files) and return the final analysis
-Analysis runSetup(const std::string& name, const std::vector<std::pair<std::string, double>>& set,
-                  RunLog& log) {
-  const Setup* s = findSetup(name);
-  REQUIRE(s != nullptr);
-  Params P = s->params();
-  for (const auto& kv : set) setDefault(P, kv.first, kv.second);
-  Analysis an = s->setupGrid(P);
-  solve(an, log);
-  return an;
-}
+using testing::runSetup;
 
 double result(const std::string& name, const Analysis& an,
               const std::vector<std::pair<std::string, double>>& set, const std::string& key) {

@@ -79,13 +79,8 @@ TEST_SUITE("robustness") {
 namespace {
 // run a setup through all its load steps with the given parameters
 Analysis runAll(const std::string& name, const std::vector<std::pair<std::string, double>>& set) {
-  const Setup* s = findSetup(name);
-  Params P = s->params();
-  for (const auto& kv : set) setDefault(P, kv.first, kv.second);
-  Analysis an = s->setupGrid(P);
   RunLog log;
-  solve(an, log);
-  return an;
+  return testing::runSetup(name, set, log);
 }
 }  // namespace
 

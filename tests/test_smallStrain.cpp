@@ -34,18 +34,7 @@ Eigen::VectorXd linearField(const Mesh& mesh, const Eigen::Matrix2d& H) {
   return uvw;
 }
 
-// run a setup in memory through all its load steps
-Analysis runSetup(const std::string& name, const std::vector<std::pair<std::string, double>>& set,
-                  RunLog& log) {
-  const Setup* s = findSetup(name);
-  REQUIRE(s != nullptr);
-  Params P = s->params();
-  for (const auto& kv : set) setDefault(P, kv.first, kv.second);
-  Analysis an = s->setupGrid(P);
-  solve(an, log);
-  REQUIRE(log.converged);
-  return an;
-}
+using testing::runSetup;
 
 // largest |sigma_yy(SS) - sigma_yy(UL)| over the points of the compaction column
 double ssVersusUL(double E) {
