@@ -27,6 +27,10 @@ enum class BoundaryType {
   PrescribedNormal  // u.n = du.n per load step, t free (the pushed side of seed 003 sec 5.1)
 };
 enum class SolidSide { Left, Right };  // where the solid lies, walking from x_0 to x_1
+// the inner integral of K2 over the d entries of [D1bar] (eqs 21, 26): Paper = int d d' = 1/2
+// as printed (the default); Consistent = 1, the variationally consistent (Nitsche) coupling
+// that reproduces a linear field exactly (docs/implicitBoundaries.md, "The factor 1/2")
+enum class IbCoupling { Paper, Consistent };
 
 struct Boundary {
   std::vector<Vector2d> x;            // end points of the segments (at least two)
@@ -35,6 +39,7 @@ struct Boundary {
   double delta = 0;                   // band width delta of eq 16 (m); addBoundary: 1e-6 h
   std::vector<Vector2d> du;           // Prescribed*: displacement increment of load step lstp
                                       // in du[lstp - 1]; the last entry holds for later steps
+  IbCoupling coupling = IbCoupling::Paper;  // K2's int d d' (eqs 21, 26)
   int segments() const { return int(x.size()) - 1; }
 };
 

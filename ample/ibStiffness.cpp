@@ -56,6 +56,7 @@ Eigen::Matrix<double, 8, 8> ibCellStiffness(const Mesh& mesh, const Boundary& b,
                                        : Eigen::Matrix2d::Identity();
   const Eigen::Matrix2d A = Eigen::Matrix2d::Identity() - M;      // [D] = A + d M
   const BandIntegrals bi = bandIntegrals(b.delta);
+  const double dDp = b.coupling == IbCoupling::Paper ? bi.d_dp : bi.dp;  // 1/2 or 1
   const double len = (b.x[c.seg + 1] - b.x[c.seg]).norm() * (c.r1 - c.r0);
   const Vector2d x0 = mesh.coord.row(mesh.etpl(c.cell, 0)).transpose();
   const double ca[4][2] = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};       // local corners (formCoord2D)
@@ -76,7 +77,7 @@ Eigen::Matrix<double, 8, 8> ibCellStiffness(const Mesh& mesh, const Boundary& b,
         g.col(2 * j + l) = eps(fx * fy * M.col(l), n);            // eq 20, times d'
       }
     }
-    const Eigen::Matrix<double, 8, 8> K2 = (bi.dp * a + bi.d_dp * m).transpose() * C * g;  // 26
+    const Eigen::Matrix<double, 8, 8> K2 = (bi.dp * a + dDp * m).transpose() * C * g;  // 26
     const Eigen::Matrix<double, 8, 8> K3 = bi.dp_dp * g.transpose() * C * g;               // 27
     K += gw[q] * len * (K2 + K2.transpose() + K3);
   }

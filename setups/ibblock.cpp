@@ -36,7 +36,7 @@ Params params() {
   setDefault(P, "nu", 0.3);
   P.push_back(Param("theta", 0).range(-360, 360).help("rotation of the block to the grid (degrees)"));
   P.push_back(Param("h", 0.01).range(1e-4, 0.05).help("grid spacing (m); L / h should be a whole number"));
-  P.push_back(Param("delta", 1e-6).range(1e-12, 0.5).help("band width of eq 16 as a fraction of h"));
+  for (const Param& p : ibParams()) P.push_back(p);
   P.push_back(Param("du", 1e-3).range(0, 0.05).help("push of the fourth side (m), in one load step"));
   return P;
 }
@@ -63,6 +63,7 @@ Analysis setupGrid(const Params& P) {
   addBoundary(an, {b, d}, BoundaryType::PrescribedNormal, delta).du = {R * Vector2d(-get(P, "du"), 0)};
   addBoundary(an, {d, e}, BoundaryType::Roller, delta);             // top
   addBoundary(an, {e, a}, BoundaryType::Roller, delta);             // left (fixed side)
+  ibSettings(an, P);
   fillPolygon(an.mpData, Vector2d::Zero(), 2 * N, 2 * N, an.mesh.h, P, 0.0, solidPolygon(an.boundaries));
   return an;
 }

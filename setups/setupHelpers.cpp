@@ -96,6 +96,18 @@ Boundary& addBoundary(Analysis& an, std::vector<Vector2d> x, BoundaryType type,
   return addBoundary(an, std::move(x), std::vector<BoundaryType>(nSeg, type), deltaOverH, solid);
 }
 
+Params ibParams() {
+  return {Param("delta", 1e-6).range(1e-12, 0.5).help("band width of eq 16 as a fraction of h"),
+          Param("ibK2", 0).choice(0, {"paper", "consistent"})
+              .help("K2's inner integral over the d entries of [D1bar]: paper = int d d' = 1/2 "
+                    "(eqs 21, 26 as printed), consistent = 1 (exact for linear fields)")};
+}
+
+void ibSettings(Analysis& an, const Params& P) {
+  for (Boundary& b : an.boundaries)
+    b.coupling = get(P, "ibK2") == 0 ? IbCoupling::Paper : IbCoupling::Consistent;
+}
+
 Polygon solidPolygon(const std::vector<Boundary>& boundaries) {
   Polygon poly;
   for (const Boundary& b : boundaries)

@@ -51,6 +51,11 @@ Boundary& addBoundary(Analysis& an, std::vector<Vector2d> x, BoundaryType type,
 Boundary& addBoundary(Analysis& an, std::vector<Vector2d> x, std::vector<BoundaryType> type,
                       double deltaOverH = 1e-6, SolidSide solid = SolidSide::Left);
 
+// the parameters of every setup with implicit boundaries: delta (band width / h, eq 16)
+// and ibK2 (the K2 coupling: 0 paper, 1 consistent); ibSettings applies ibK2 to an's boundaries
+Params ibParams();
+void ibSettings(Analysis& an, const Params& P);
+
 // the polygon round the solid: the points of the boundaries, in order
 Polygon solidPolygon(const std::vector<Boundary>& boundaries);
 

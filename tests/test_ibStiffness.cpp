@@ -68,11 +68,12 @@ Matrix3d elastic(double E, double nu) {
 
 double relDiff(const Mat8& a, const Mat8& b) { return (a - b).norm() / b.norm(); }
 
-Analysis block(double theta, bool nodal, RunLog& log) {
+Analysis block(double theta, bool nodal, RunLog& log, int ibK2 = 0) {
   const Setup* s = findSetup("ibblock");
   REQUIRE(s != nullptr);
   Params P = s->params();
   setDefault(P, "theta", theta);
+  setDefault(P, "ibK2", ibK2);
   Analysis an = s->setupGrid(P);
   if (nodal) {  // the same points, the rollers as nodal conditions on the grid lines
     an.boundaries.clear();
@@ -191,6 +192,35 @@ TEST_SUITE("ibStiffness") {
     CHECK(ds < 5e-7);                                            // per point; the mean is 7.5e-8
     CHECK(std::abs(fx.mpData[0].sig(0) / 1e6 + 13.4615) < 1e-3);  // E(1-nu)/((1+nu)(1-2nu)) 0.01
     CHECK(std::abs(fx.mpData[0].sig(1) / 1e6 + 5.7692) < 1e-3);   // E nu/((1+nu)(1-2nu)) 0.01
+  }
+
+  TEST_CASE("ibblock: with the consistent K2 coupling 0 degrees equals the nodal rollers to 1e-8") {
+    RunLog l1, l2;
+    const Analysis ib = block(0, false, l1, 1), fx = block(0, true, l2);
+    REQUIRE(l1.converged);
+    REQUIRE(l2.converged);
+    double du = 0, ds = 0;
+    for (size_t p = 0; p < ib.mpData.size(); ++p) {
+      du = std::max(du, (ib.mpData[p].u - fx.mpData[p].u).norm() / 1e-3);
+      ds = std::max(ds, std::abs(ib.mpData[p].sig(0) - fx.mpData[p].sig(0)) / 13.46e6);
+    }
+    CHECK(du < 1e-8);  // measured 2e-15: int d d' -> 1 makes K2 exact for the linear field
+    CHECK(ds < 1e-8);
+  }
+
+  TEST_CASE("ibblock: the paper's K2 coupling shifts each roller by 3 delta eps / 8") {
+    // docs/implicitBoundaries.md: with int d d' = 1/2 the stress error is 0.75 delta / L
+    for (double dh : {1e-4, 1e-5}) {
+      const Setup* s = findSetup("ibblock");
+      Params P = s->params();
+      setDefault(P, "delta", dh);
+      RunLog log;
+      Analysis an = s->setupGrid(P);
+      solve(an, log);
+      REQUIRE(log.converged);
+      const double predicted = 0.75 * dh * 0.01 / 0.1;          // delta = dh h, h = 10 mm, L = 0.1 m
+      CHECK(std::abs(s->results(an, P)[1].second / predicted - 1) < 1e-3);
+    }
   }
 
   TEST_CASE("ibblock: uniform stress at 30 and 45 degrees and 0 equal to 90") {
