@@ -119,6 +119,7 @@ void solve(Analysis& an, RunLog& log, const RunOptions& opt) {
     recordStep(log, inc, NRit, fErr, true);
     an.frct = frct + fib;                                            // reactions, IB ones too
     an.uvw = uvw;
+    an.ibForce = boundaryForces(ib, uvw, int(an.boundaries.size()));  // seed 003 (none: empty)
     timed(T.updateMPs, updateMPs, mesh, uvw, an.domainUpdate, mpData);
     moveBoundaries(an.boundaries, lstp, inc.bcScale(an.lstps));      // seed 003: by their du
     if (!inc.last) continue;                                         // (remedy: a first half)

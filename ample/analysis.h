@@ -35,6 +35,7 @@ struct Analysis {
   std::vector<Boundary> boundaries;                 // implicit boundaries (seed 003); empty: none
   Eigen::VectorXd frct;                             // reactions of the last converged step
   Eigen::VectorXd uvw;                              // its converged displacement increment
+  std::vector<Vector2d> ibForce;                    // force of each implicit boundary on the body
   // optional work of a setup at the start / end of each load step (nullptr: none),
   // e.g. a grid that follows the body, boundary cells that change, a reaction history
   std::function<void(Analysis& an, int lstp)> beforeStep, afterStep;

@@ -93,27 +93,29 @@ ImplicitBoundaries ibStiffness(const Mesh& mesh, const std::vector<Boundary>& bo
     for (int e = 0; e < mp.ne; ++e) cst[mp.eIN[e]] += Vector3d(mp.mCst(0), mp.mCst(1), 1.0);
   std::vector<Eigen::Triplet<double>> trip;
   ib.f = Eigen::VectorXd::Zero(mesh.nDoF());
-  for (const Boundary& b : boundaries)
+  for (size_t bi = 0; bi < boundaries.size(); ++bi) {
+    const Boundary& b = boundaries[bi];
     for (const CutCell& c : cutCells(mesh, b)) {
       if (cst[c.cell](2) == 0) continue;                          // no point: nothing to hold
       const Vector3d m = cst[c.cell] / cst[c.cell](2);            // mean E, nu of its points
-      const Eigen::Matrix<double, 8, 8> k = ibCellStiffness(mesh, b, c, planeStrainC(m(0), m(1)));
-      const BoundaryType t = b.type[c.seg];
-      const bool prescribed = t == BoundaryType::Prescribed || t == BoundaryType::PrescribedNormal;
+      IbCellTerm t{int(bi), {}, ibCellStiffness(mesh, b, c, planeStrainC(m(0), m(1))), {}};
+      const BoundaryType type = b.type[c.seg];
+      const bool prescribed = type == BoundaryType::Prescribed || type == BoundaryType::PrescribedNormal;
       const Vector2d ua = prescribed ? Vector2d(share * duAt(b, lstp)) : Vector2d::Zero();
-      int d[8];
       Eigen::Matrix<double, 8, 1> uae;                            // eq 28: u_a on the cell's dofs
       for (int j = 0; j < nen; ++j)
         for (int i = 0; i < nD; ++i) {
-          d[2 * j + i] = dof(mesh.etpl(c.cell, j), i);
+          t.dofs[2 * j + i] = dof(mesh.etpl(c.cell, j), i);
           uae(2 * j + i) = ua(i);
         }
-      const Eigen::Matrix<double, 8, 1> fe = k * uae;
+      t.f = t.k * uae;
       for (int r = 0; r < 8; ++r) {
-        ib.f(d[r]) += fe(r);
-        for (int s = 0; s < 8; ++s) trip.emplace_back(d[r], d[s], k(r, s));
+        ib.f(t.dofs[r]) += t.f(r);
+        for (int q = 0; q < 8; ++q) trip.emplace_back(t.dofs[r], t.dofs[q], t.k(r, q));
       }
+      ib.cells.push_back(t);
     }
+  }
   ib.K.resize(mesh.nDoF(), mesh.nDoF());
   ib.K.setFromTriplets(trip.begin(), trip.end());
   return ib;
@@ -126,6 +128,18 @@ Eigen::VectorXd addImplicitBoundaries(const ImplicitBoundaries& ib, const Eigen:
   const Eigen::VectorXd reaction = ib.f - ib.K * uvw;             // the boundaries' forces
   fint -= reaction;
   return reaction;
+}
+
+std::vector<Vector2d> boundaryForces(const ImplicitBoundaries& ib, const Eigen::VectorXd& uvw,
+                                     int nBoundaries) {
+  std::vector<Vector2d> F(nBoundaries, Vector2d::Zero());
+  for (const IbCellTerm& t : ib.cells) {
+    Eigen::Matrix<double, 8, 1> ue;
+    for (int r = 0; r < 8; ++r) ue(r) = uvw(t.dofs[r]);
+    const Eigen::Matrix<double, 8, 1> r = t.f - t.k * ue;
+    for (int j = 0; j < nen; ++j) F[t.boundary] += Vector2d(r(2 * j), r(2 * j + 1));
+  }
+  return F;
 }
 
 void moveBoundaries(std::vector<Boundary>& boundaries, int lstp, double share) {

@@ -26,7 +26,9 @@
 // and zeros when there are no implicit boundaries. moveBoundaries: after a
 // converged step the points of Prescribed* segments move by their du.
 // Inputs:  mesh · boundaries · mpData (mCst, eIN) · lstp · s | ib · uvw
-// Outputs: ImplicitBoundaries {K (nDoF x nDoF), f (nDoF)} | Kt, fint, reactions
+// boundaryForces: the force of each boundary on the body, from the cell terms (the
+// total force: fint is that of the total stress; a footing's load, a support's reaction).
+// Outputs: ImplicitBoundaries {K (nDoF x nDoF), f (nDoF), cells} | Kt, fint, reactions
 // Page:    docs/implicitBoundaries.md   Tests: tests/test_ibStiffness.cpp
 //--------------------------------------------------------------------------
 #pragma once
@@ -36,9 +38,16 @@
 
 namespace ample {
 
+struct IbCellTerm {                    // one cut cell of one boundary
+  int boundary;                        // index in the setup's boundaries
+  int dofs[8];                         // the cell's dofs (node j: 2j x, 2j + 1 y)
+  Eigen::Matrix<double, 8, 8> k;       // K2 + K2' + K3
+  Eigen::Matrix<double, 8, 1> f;       // eq 28: k u_a
+};
 struct ImplicitBoundaries {
   SpMat K;            // K2 + K2' + K3 of every cut cell (empty: no boundaries)
   Eigen::VectorXd f;  // eq 28, the equivalent force of the prescribed increments
+  std::vector<IbCellTerm> cells;       // the terms K and f are assembled from
 };
 
 // the 8 x 8 K2 + K2' + K3 of one cut cell (dofs: the cell's nodes, x and y) for C
@@ -51,6 +60,9 @@ ImplicitBoundaries ibStiffness(const Mesh& mesh, const std::vector<Boundary>& bo
                                const std::vector<MaterialPoint>& mpData, int lstp, double share);
 Eigen::VectorXd addImplicitBoundaries(const ImplicitBoundaries& ib, const Eigen::VectorXd& uvw,
                                       SpMat& Kt, Eigen::VectorXd& fint);
+// the force each boundary exerts on the body, sum over its cut cells of f - k uvw (N per m)
+std::vector<Vector2d> boundaryForces(const ImplicitBoundaries& ib, const Eigen::VectorXd& uvw,
+                                     int nBoundaries);
 void moveBoundaries(std::vector<Boundary>& boundaries, int lstp, double share);
 
 }  // namespace ample

@@ -246,6 +246,33 @@ TEST_SUITE("ibStiffness") {
 }
 
 TEST_SUITE("ibStiffness") {
+  TEST_CASE("boundaryForces: the block's sides carry sigma L along their normals, in balance") {
+    // ibblock at 30 degrees, consistent K2: the pushed side presses with sigma_x'x' L =
+    // E (1 - nu) eps L / ((1 + nu)(1 - 2 nu)) along its inward normal, the side opposite
+    // it takes as much, the two other rollers sigma_y'y' L; no tangential force (rollers,
+    // PrescribedNormal); the four sum to zero (no body force)
+    const Setup* s = findSetup("ibblock");
+    Params P = s->params();
+    setDefault(P, "theta", 30);
+    setDefault(P, "ibK2", 1);
+    Analysis an = s->setupGrid(P);
+    const std::vector<Boundary> b0 = an.boundaries;
+    RunLog log;
+    solve(an, log);
+    REQUIRE(log.converged);
+    REQUIRE(an.ibForce.size() == 4);
+    const double E = 1e9, nu = 0.3, eps = 0.01, L = 0.1, k = E * eps / ((1 + nu) * (1 - 2 * nu));
+    const double Fn[4] = {k * nu * L, k * (1 - nu) * L, k * nu * L, k * (1 - nu) * L};
+    Vector2d sum = Vector2d::Zero();
+    for (int i = 0; i < 4; ++i) {
+      const Vector2d n = inwardNormal(b0[i], 0), t = tangent(b0[i], 0);
+      CHECK(std::abs(an.ibForce[i].dot(n) / Fn[i] - 1) < 1e-6);  // measured 4e-11 .. 1.4e-9
+      CHECK(std::abs(an.ibForce[i].dot(t)) < 1e-6 * Fn[i]);
+      sum += an.ibForce[i];
+    }
+    CHECK(sum.norm() < 1e-6 * Fn[1]);
+  }
+
   TEST_CASE("ibStiffness: a fully prescribed pushed side gives the uniform stress and then moves") {
     // ibblock at 30 degrees with the pushed side Prescribed (both directions, eq 28) instead
     // of PrescribedNormal: the exact field u' = (-eps x', 0) has no tangential part on that
