@@ -40,6 +40,8 @@ struct Boundary {
   std::vector<Vector2d> du;           // Prescribed*: displacement increment of load step lstp
                                       // in du[lstp - 1]; the last entry holds for later steps
   IbCoupling coupling = IbCoupling::Paper;  // K2's int d d' (eqs 21, 26)
+  std::vector<Vector2d> curveNormal;  // a curve's inward unit normal at each x_s (empty: the
+                                      // segments' own); sec 4: n, t vary along the segment
   int segments() const { return int(x.size()) - 1; }
 };
 
@@ -56,6 +58,12 @@ inline Vector2d tangent(const Boundary& b, int s) {
 // phi of eq 16: signed distance of p from the line of segment s, positive in the solid
 inline double signedDistance(const Boundary& b, int s, const Vector2d& p) {
   return (p - b.x[s]).dot(inwardNormal(b, s));
+}
+// normal used by K2, K3 at the parameter r of segment s: the segment's own, or for a curve
+// (curveNormal given) the normalised interpolation of the curve's normals at its ends
+inline Vector2d stiffnessNormal(const Boundary& b, int s, double r) {
+  if (b.curveNormal.empty()) return inwardNormal(b, s);
+  return ((1 - r) * b.curveNormal[s] + r * b.curveNormal[s + 1]).normalized();
 }
 // point of segment s at the parameter r in [0, 1]: x_s + r (x_s+1 - x_s)
 inline Vector2d pointAt(const Boundary& b, int s, double r) {

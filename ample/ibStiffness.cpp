@@ -5,6 +5,7 @@
 //--------------------------------------------------------------------------
 #include "ibStiffness.h"
 #include "dirichletBand.h"
+#include "errors.h"
 #include <cmath>
 
 namespace ample {
@@ -49,12 +50,8 @@ Matrix3d planeStrainC(double E, double nu) {
 
 Eigen::Matrix<double, 8, 8> ibCellStiffness(const Mesh& mesh, const Boundary& b, const CutCell& c,
                                             const Matrix3d& C) {
-  const Vector2d n = inwardNormal(b, c.seg);
   const BoundaryType t = b.type[c.seg];
   const bool normalOnly = t == BoundaryType::Roller || t == BoundaryType::PrescribedNormal;
-  const Eigen::Matrix2d M = normalOnly ? Eigen::Matrix2d(n * n.transpose())
-                                       : Eigen::Matrix2d::Identity();
-  const Eigen::Matrix2d A = Eigen::Matrix2d::Identity() - M;      // [D] = A + d M
   const BandIntegrals bi = bandIntegrals(b.delta);
   const double dDp = b.coupling == IbCoupling::Paper ? bi.d_dp : bi.dp;  // 1/2 or 1
   const double len = (b.x[c.seg + 1] - b.x[c.seg]).norm() * (c.r1 - c.r0);
@@ -64,7 +61,11 @@ Eigen::Matrix<double, 8, 8> ibCellStiffness(const Mesh& mesh, const Boundary& b,
   gaussRule(10, gx, gw);                                          // sec 4: 10 points along t
   Eigen::Matrix<double, 8, 8> K = Eigen::Matrix<double, 8, 8>::Zero();
   for (size_t q = 0; q < gx.size(); ++q) {
-    const Vector2d xb = pointAt(b, c.seg, c.r0 + gx[q] * (c.r1 - c.r0));  // on the boundary
+    const double r = c.r0 + gx[q] * (c.r1 - c.r0);
+    const Vector2d xb = pointAt(b, c.seg, r), n = stiffnessNormal(b, c.seg, r);  // on the boundary
+    const Eigen::Matrix2d M = normalOnly ? Eigen::Matrix2d(n * n.transpose())
+                                         : Eigen::Matrix2d::Identity();
+    const Eigen::Matrix2d A = Eigen::Matrix2d::Identity() - M;    // [D] = A + d M
     const Vector2d xi = (xb - x0).cwiseQuotient(mesh.h);
     Mat38 a, m, g;                                                // the columns a_jl, m_jl, g_jl
     for (int j = 0; j < nen; ++j) {
@@ -95,6 +96,7 @@ ImplicitBoundaries ibStiffness(const Mesh& mesh, const std::vector<Boundary>& bo
   ib.f = Eigen::VectorXd::Zero(mesh.nDoF());
   for (size_t bi = 0; bi < boundaries.size(); ++bi) {
     const Boundary& b = boundaries[bi];
+    const size_t before = ib.cells.size();
     for (const CutCell& c : cutCells(mesh, b)) {
       if (cst[c.cell](2) == 0) continue;                          // no point: nothing to hold
       const Vector3d m = cst[c.cell] / cst[c.cell](2);            // mean E, nu of its points
@@ -115,6 +117,11 @@ ImplicitBoundaries ibStiffness(const Mesh& mesh, const std::vector<Boundary>& bo
       }
       ib.cells.push_back(t);
     }
+    if (ib.cells.size() == before && !b.du.empty() && duAt(b, lstp).norm() > 0 && !mpData.empty())
+      throw RunError("implicit boundary " + std::to_string(bi) + " (prescribed) cuts no cell that "
+                     "holds a material point in load step " + std::to_string(lstp) + ": it lies "
+                     "beyond the points nearest to it and would push nothing; use more points "
+                     "per cell (mp) or another grid spacing h");
   }
   ib.K.resize(mesh.nDoF(), mesh.nDoF());
   ib.K.setFromTriplets(trip.begin(), trip.end());

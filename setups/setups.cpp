@@ -20,6 +20,8 @@ namespace collapse   { Params params(); Analysis setupGrid(const Params&); Resul
 namespace shear      { Params params(); Analysis setupGrid(const Params&); Results results(const Analysis&, const Params&); }
 namespace stretch    { Params params(); Analysis setupGrid(const Params&); Results results(const Analysis&, const Params&); }
 namespace ibblock    { Params params(); Analysis setupGrid(const Params&); Results results(const Analysis&, const Params&); }
+namespace funnel     { Params params(); Analysis setupGrid(const Params&); Results results(const Analysis&, const Params&); }
+namespace footing    { Params params(); Analysis setupGrid(const Params&); Results results(const Analysis&, const Params&); }
 
 const std::vector<Setup>& setupsTable() {
   static const std::vector<Setup> table = {
@@ -35,6 +37,10 @@ const std::vector<Setup>& setupsTable() {
        stretch::params, stretch::setupGrid, stretch::results},
       {"ibblock", "contained block compressed through implicit rollers at an angle (seed 003 sec 5.1)",
        ibblock::params, ibblock::setupGrid, ibblock::results},
+      {"footing", "rough rigid footing pushed 1 m into an elastic domain by an implicit boundary (seed 003 sec 5.5)",
+       footing::params, footing::setupGrid, footing::results},
+      {"funnel", "elastic body forced through a curved funnel of implicit rollers (seed 003 sec 5.6)",
+       funnel::params, funnel::setupGrid, funnel::results},
   };
   return table;
 }

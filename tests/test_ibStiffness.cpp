@@ -94,7 +94,7 @@ TEST_SUITE("ibStiffness") {
     const double th = 30 * M_PI / 180;
     const Vector2d p0(1.0, 1.2), p1 = p0 + 3.0 * Vector2d(std::cos(th), std::sin(th));
     for (BoundaryType t : {BoundaryType::Fixed, BoundaryType::Roller}) {
-      Boundary b{{p0, p1}, {t}, SolidSide::Left, 1e-3, {}};
+      Boundary b{{p0, p1}, {t}, SolidSide::Left, 1e-3, {}, IbCoupling::Paper, {}};
       const std::vector<CutCell> cells = cutCells(mesh, b);
       const CutCell* c = nullptr;
       for (const CutCell& cc : cells)
@@ -122,7 +122,7 @@ TEST_SUITE("ibStiffness") {
     for (double deg : {0.0, 30.0, 45.0, 110.0}) {
       const double th = deg * M_PI / 180, delta = 1e-4;
       const Vector2d dir(std::cos(th), std::sin(th)), mid(1.5, 1.5);
-      Boundary b{{mid - 2 * dir, mid + 2 * dir}, {BoundaryType::Roller}, SolidSide::Left, delta, {}};
+      Boundary b{{mid - 2 * dir, mid + 2 * dir}, {BoundaryType::Roller}, SolidSide::Left, delta, {}, IbCoupling::Paper, {}};
       const Vector2d n(-dir(1), dir(0));
       Eigen::Matrix2d T;                                          // eq 25: rows n', t'
       T << n(0), n(1), -n(1), n(0);
