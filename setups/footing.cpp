@@ -28,14 +28,7 @@ namespace ample::footing {
 static const double L = 3.0;  // side of the domain (m)
 
 Params params() {
-  Params P = commonParams(20);
-  setDefault(P, "tol", 1e-8);        // IB residual floor ~2e-9 (docs/implicitBoundaries.md)
-  setDefault(P, "mp", 2);
-  setDefault(P, "mpType", 1);        // standard MPM
-  setDefault(P, "formulation", 3);   // SS: small strain, the paper's sec 2
-  setDefault(P, "E", 1e9);
-  setDefault(P, "nu", 0.3);
-  for (const Param& p : ibParams()) P.push_back(p);
+  Params P = seed003Params(20, 2);
   P.push_back(Param("h", 0.2).range(0.02, 1.0).help("grid spacing (m); 3 / h a whole number"));
   P.push_back(Param("B", 1.0).range(0.1, 3.0).help("footing width (m), centred on the top (ours)"));
   P.push_back(Param("push", 1.0).range(0, 1.5).help("total footing displacement (m), downwards"));

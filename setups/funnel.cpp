@@ -43,14 +43,7 @@ static double slope(double x) {  // dH/dx
 }
 
 Params params() {
-  Params P = commonParams(6);
-  setDefault(P, "tol", 1e-8);        // IB residual floor ~2e-9 (docs/implicitBoundaries.md)
-  setDefault(P, "mp", 2);
-  setDefault(P, "mpType", 1);        // standard MPM
-  setDefault(P, "formulation", 3);   // SS: small strain, the paper's sec 2
-  setDefault(P, "E", 1e9);
-  setDefault(P, "nu", 0.3);
-  for (const Param& p : ibParams()) P.push_back(p);
+  Params P = seed003Params(6, 2);
   P.push_back(Param("h", 4.0 / 3 * mm).range(0.25 * mm, 4 * mm).help("grid spacing (m)"));
   P.push_back(Param("normals", 1).choice(0, {"segments", "curve"})
       .help("normal of K2, K3 on the walls: each segment's own, or the curve's, varying along "

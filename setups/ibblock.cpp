@@ -27,16 +27,9 @@ namespace ample::ibblock {
 static const double L = 0.1;  // block side (m)
 
 Params params() {
-  Params P = commonParams(1);
-  setDefault(P, "tol", 1e-8);        // the round-off floor of K3 ~ 1/delta is ~2e-9 (docs)
-  setDefault(P, "mp", 1);
-  setDefault(P, "mpType", 1);        // standard MPM
-  setDefault(P, "formulation", 3);   // SS: small strain, the paper's sec 2
-  setDefault(P, "E", 1e9);
-  setDefault(P, "nu", 0.3);
+  Params P = seed003Params(1, 1);
   P.push_back(Param("theta", 0).range(-360, 360).help("rotation of the block to the grid (degrees)"));
   P.push_back(Param("h", 0.01).range(1e-4, 0.05).help("grid spacing (m); L / h should be a whole number"));
-  for (const Param& p : ibParams()) P.push_back(p);
   P.push_back(Param("du", 1e-3).range(0, 0.05).help("push of the fourth side (m), in one load step"));
   return P;
 }

@@ -103,6 +103,18 @@ Params ibParams() {
                     "(eqs 21, 26 as printed), consistent = 1 (exact for linear fields)")};
 }
 
+Params seed003Params(int lstps, int mp) {
+  Params P = commonParams(lstps);
+  setDefault(P, "tol", 1e-8);
+  setDefault(P, "mp", mp);
+  setDefault(P, "mpType", 1);        // standard MPM (seed 003 sec 2)
+  setDefault(P, "formulation", 3);   // SS: small strain, linear elastic (sec 2)
+  setDefault(P, "E", 1e9);
+  setDefault(P, "nu", 0.3);
+  for (const Param& p : ibParams()) P.push_back(p);
+  return P;
+}
+
 void ibSettings(Analysis& an, const Params& P) {
   for (Boundary& b : an.boundaries)
     b.coupling = get(P, "ibK2") == 0 ? IbCoupling::Paper : IbCoupling::Consistent;

@@ -54,6 +54,10 @@ Boundary& addBoundary(Analysis& an, std::vector<Vector2d> x, std::vector<Boundar
 // the parameters of every setup with implicit boundaries: delta (band width / h, eq 16)
 // and ibK2 (the K2 coupling: 0 paper, 1 consistent); ibSettings applies ibK2 to an's boundaries
 Params ibParams();
+// commonParams(lstps) with the settings of seed 003's examples (sec 5): mp points per cell,
+// standard MPM, small strain (SS), E = 1000 MPa, nu = 0.3, tol = 1e-8 (the IB residual
+// floor is ~2e-9 at delta = 1e-6 h), and ibParams
+Params seed003Params(int lstps, int mp);
 void ibSettings(Analysis& an, const Params& P);
 
 // the polygon round the solid: the points of the boundaries, in order
