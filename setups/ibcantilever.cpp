@@ -1,0 +1,148 @@
+//--------------------------------------------------------------------------
+// ibcantilever — slender cantilever at 0, 45 and 90 degrees to the grid (seed 003 sec 5.4)
+//--------------------------------------------------------------------------
+// A 100 x 20 mm beam (L = 0.1 m, d = 0.02 m), plane strain, E = 1000 MPa,
+// nu = 0.3, small strain (formulation SS, sec 2), standard MPM (mpType 1),
+// mp x mp points per cell by fillPolygon (sec 4; the paper: 10 x 10), grid
+// h = 2 mm. In the beam's own axes (x' along the beam, y' across it) the free
+// end is x' = 0 ("the origin", its lower corner (0, 0)), the fixed end x' = L,
+// the faces y' = 0 and y' = d; the end x' = L is one implicit Fixed boundary
+// (u = 0, eqs 13-22). The whole model, beam, load and room to deflect, is the
+// 0 degree model turned by theta (degrees, anticlockwise) about the origin,
+// which sits on a grid node; multiples of 90 degrees use exact cos, sin, so
+// 0 and 90 degrees are the same discretisation. The body force b (N/m3; the
+// paper's 0.2 N/mm2 per unit thickness = 2e8 N/m3) acts along -y' (the
+// paper's "y-directions shown in fig 17", read as the beam's own transverse
+// direction so that the three problems are the same) and grows in lstps equal
+// steps. It is carried as the point force fp = b V0 (-y' rotated), which
+// detExtForce sums exactly as rho g V (eq 27): gravity (an.g) is only -y.
+// A point that moves more than twice the beam-theory tip deflection (a point
+// alone in a cell: the cell-crossing mechanism of standard MPM) stops the run
+// with a RunError instead of a silently wrong free-end mean.
+// Free-end displacement: the V-weighted mean over the points whose original
+// x' < strip = 2 mm (one paper cell), in beam axes.
+// Beam theory (results, history): plane-strain Timoshenko cantilever under
+// q = b d, E' = E / (1 - nu^2), I = d^3 / 12, G = E / (2 (1 + nu)), kappa = 5/6,
+// at distance s = L - x' from the support:
+//   w(s) = q s^2 (6 L^2 - 4 L s + s^2) / (24 E' I) + q (L s - s^2 / 2) / (kappa G d)
+// (tip: q L^4 / (8 E' I) + q L^2 / (2 kappa G d)), averaged over the same points.
+// Outputs: history.csv per step: b, total body force, free-end u', v', beam
+//          theory v', reaction (sum of an.frct) in beam axes;
+//          results: the same at full load, their ratios, points
+// Tests:   tests/test_ibCantilever.cpp
+//--------------------------------------------------------------------------
+#include "ample/errors.h"
+#include "ample/formCoord2D.h"
+#include "setupHelpers.h"
+#include <cmath>
+
+namespace ample::ibcantilever {
+
+static const double L = 0.1, d = 0.02, strip = 0.002;  // beam (m); free-end strip (m)
+
+Params params() {
+  Params P = commonParams(10);       // 20 steps meet a cell-crossing mechanism at 0, 90 (docs)
+  setDefault(P, "tol", 1e-8);        // the round-off floor of K3 ~ 1/delta is ~2e-9 (docs)
+  setDefault(P, "mp", 10);           // the paper: 100 points per cell
+  setDefault(P, "mpType", 1);        // standard MPM
+  setDefault(P, "formulation", 3);   // SS: small strain, the paper's sec 2
+  setDefault(P, "E", 1e9);
+  setDefault(P, "nu", 0.3);
+  P.push_back(Param("theta", 0).range(-360, 360)
+                  .help("rotation of the beam to the grid (degrees, about the free end's lower corner)"));
+  P.push_back(Param("h", 0.002).range(2.5e-4, 0.01)
+                  .help("grid spacing (m); d / h = 0.02 / h whole keeps the 0 and 90 degree faces on grid lines"));
+  P.push_back(Param("b", 2e8).atLeast(0)
+                  .help("body force at full load along -y' of the beam (N/m3; the paper: 0.2 N/mm2 = 2e8)"));
+  for (const Param& p : ibParams()) P.push_back(p);
+  return P;
+}
+
+// rotation by theta degrees, exact at multiples of 90
+static Eigen::Matrix2d rotation(double theta) {
+  double c = std::cos(theta * M_PI / 180), s = std::sin(theta * M_PI / 180);
+  if (std::fmod(theta, 90.0) == 0.0) c = std::round(c), s = std::round(s);
+  Eigen::Matrix2d R;
+  R << c, -s, s, c;
+  return R;
+}
+
+// the Timoshenko deflection (m, along -y') at x' from the free end under q = b d
+static double beamTheory(double x, double b, double E, double nu) {
+  const double q = b * d, Ep = E / (1 - nu * nu), I = d * d * d / 12, G = E / (2 * (1 + nu));
+  const double s = L - x;
+  return q * s * s * (6 * L * L - 4 * L * s + s * s) / (24 * Ep * I) + q * (L * s - s * s / 2) / (5.0 / 6 * G * d);
+}
+
+// the grid node of the origin and the grid (cells) that holds the turned room
+struct Layout { Vector2d O; int nelsx, nelsy; };
+static Layout layout(const Params& P) {
+  const double h = get(P, "h"), w = beamTheory(0, get(P, "b"), get(P, "E"), get(P, "nu"));
+  const double slope = 2 * w / L;                                    // > the tip rotation
+  const double x0 = -(1.3 * slope * d + 2 * h), y0 = -(1.3 * w + 2 * h);  // room to deflect
+  const Eigen::Matrix2d R = rotation(get(P, "theta"));
+  Vector2d lo = Vector2d::Constant(INFINITY), hi = -lo;
+  for (const Vector2d& c : {Vector2d(x0, y0), Vector2d(L + 2 * h, y0), Vector2d(L + 2 * h, d + 2 * h),
+                            Vector2d(x0, d + 2 * h)}) {
+    lo = lo.cwiseMin(R * c), hi = hi.cwiseMax(R * c);
+  }
+  const int i0 = int(std::ceil(-lo(0) / h - 1e-9)), j0 = int(std::ceil(-lo(1) / h - 1e-9));
+  return {Vector2d(i0 * h, j0 * h), i0 + int(std::ceil(hi(0) / h - 1e-9)), j0 + int(std::ceil(hi(1) / h - 1e-9))};
+}
+
+Analysis setupGrid(const Params& P) {
+  const double h = get(P, "h"), b = get(P, "b");
+  const Layout g = layout(P);
+  const Eigen::Matrix2d R = rotation(get(P, "theta"));
+  Analysis an = baseAnalysis(P);
+  an.mesh = formCoord2D(g.nelsx, g.nelsy, g.nelsx * h, g.nelsy * h);
+  auto at = [&](double x, double y) { return Vector2d(g.O + R * Vector2d(x, y)); };
+  const Polygon beam = {at(0, 0), at(L, 0), at(L, d), at(0, d)};     // anticlockwise
+  addBoundary(an, {beam[1], beam[2]}, BoundaryType::Fixed, get(P, "delta"));  // the support
+  ibSettings(an, P);
+  Vector2d lo = beam[0], hi = beam[0];                               // the cells round the beam
+  for (const Vector2d& c : beam) lo = lo.cwiseMin(c), hi = hi.cwiseMax(c);
+  const Eigen::Vector2i c0 = (lo / h).array().floor().cast<int>() - 1;
+  const Eigen::Vector2i c1 = (hi / h).array().ceil().cast<int>() + 1;
+  fillPolygon(an.mpData, c0.cast<double>() * h, c1(0) - c0(0), c1(1) - c0(1), an.mesh.h, P, 0.0, beam);
+  const Vector2d dir = R * Vector2d(0, -1);                          // -y'
+  for (MaterialPoint& mp : an.mpData) mp.fp = b * mp.vp0 * dir;      // body force as fp (eq 27)
+
+  const double E = get(P, "E"), nu = get(P, "nu");
+  an.afterStep = [R, O = g.O, b, E, nu, lstps = an.lstps](Analysis& a, int lstp) {
+    const double lf = double(lstp) / lstps;
+    Vector2d uTip = Vector2d::Zero(), F = Vector2d::Zero(), Rct = Vector2d::Zero();
+    double V = 0, wTip = 0;
+    const double uMax = 2 * beamTheory(0, lf * b, E, nu) + a.mesh.h(0);  // > any point's share
+    for (const MaterialPoint& mp : a.mpData) {
+      if (mp.u.norm() > uMax)  // a point alone in a cell on a mechanism (cell crossing)
+        throw RunError("load step " + std::to_string(lstp) + ": a point at (" + std::to_string(mp.X0(0)) +
+                       ", " + std::to_string(mp.X0(1)) + ") moved " + std::to_string(mp.u.norm()) +
+                       " m, twice the beam-theory tip deflection: a cell-crossing mechanism (try other lstps or mp)");
+      F += lf * mp.fp;
+      const Vector2d X = R.transpose() * (mp.X0 - O);
+      if (X(0) >= strip) continue;
+      V += mp.vp0, uTip += mp.vp0 * R.transpose() * mp.u, wTip += mp.vp0 * beamTheory(X(0), lf * b, E, nu);
+    }
+    for (int n = 0; n < a.mesh.nodes(); ++n) Rct += Vector2d(a.frct(dof(n, 0)), a.frct(dof(n, 1)));
+    F = R.transpose() * F, Rct = R.transpose() * Rct;
+    a.history.push_back({{"lstp", lstp}, {"load_factor", lf}, {"b", lf * b}, {"F_y", F(1)},
+                         {"tip_u", uTip(0) / V}, {"tip_v", uTip(1) / V}, {"tip_v_beam", -wTip / V},
+                         {"R_x", Rct(0)}, {"R_y", Rct(1)}});
+  };
+  return an;
+}
+
+Results results(const Analysis& an, const Params&) {
+  if (an.history.empty()) return {{"points", double(an.mpData.size())}};
+  Results r;
+  for (const auto& kv : an.history.back())
+    if (kv.first != "lstp" && kv.first != "load_factor") r.push_back(kv);
+  const auto v = [&](const char* k) { for (const auto& kv : r) if (kv.first == k) return kv.second; return 0.0; };
+  r.push_back({"tip_v_over_beam", v("tip_v") / v("tip_v_beam")});
+  r.push_back({"reaction_error", std::abs(v("R_y") + v("F_y")) / std::abs(v("F_y"))});
+  r.push_back({"points", double(an.mpData.size())});
+  return r;
+}
+
+}  // namespace ample::ibcantilever
