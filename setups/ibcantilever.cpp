@@ -14,7 +14,8 @@
 // paper's 0.2 N/mm2 per unit thickness = 2e8 N/m3) acts along -y' (the
 // paper's "y-directions shown in fig 17", read as the beam's own transverse
 // direction so that the three problems are the same) and grows in lstps equal
-// steps. It is carried as the point force fp = b V0 (-y' rotated), which
+// steps (default 10: with 20, the 0 and 90 degree runs meet a cell-crossing
+// mechanism at step 14, docs/implicitBoundaries.md). It is carried as the point force fp = b V0 (-y' rotated), which
 // detExtForce sums exactly as rho g V (eq 27): gravity (an.g) is only -y.
 // A point that moves more than twice the beam-theory tip deflection (a point
 // alone in a cell: the cell-crossing mechanism of standard MPM) stops the run
@@ -49,11 +50,13 @@ Params params() {
   setDefault(P, "E", 1e9);
   setDefault(P, "nu", 0.3);
   P.push_back(Param("theta", 0).range(-360, 360)
-                  .help("rotation of the beam to the grid (degrees, about the free end's lower corner)"));
+                  .help("rotation of the whole model to the grid (degrees, anticlockwise, about the free end's lower "
+                        "corner, a grid node); the beam runs from the free end x' = 0 to the fixed end x' = 100 mm"));
   P.push_back(Param("h", 0.002).range(2.5e-4, 0.01)
                   .help("grid spacing (m); d / h = 0.02 / h whole keeps the 0 and 90 degree faces on grid lines"));
   P.push_back(Param("b", 2e8).atLeast(0)
-                  .help("body force at full load along -y' of the beam (N/m3; the paper: 0.2 N/mm2 = 2e8)"));
+                  .help("body force at full load along the beam's own -y' (N/m3; the paper: 0.2 N/mm2 = 2e8); "
+                        "the free-end figures are means over the points within 2 mm of the free end"));
   for (const Param& p : ibParams()) P.push_back(p);
   return P;
 }
