@@ -12,3 +12,4 @@ cmake --preset release
 cmake --build --preset release --target ample_bench
 build/release/ample_bench --out docs/results "$@"
 /usr/bin/python3 plotting/plot_results.py docs/results
+/usr/bin/python3 plotting/plot_ib.py docs/results > /dev/null   # deepbeam.png, ibshear.png

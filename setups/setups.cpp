@@ -20,6 +20,8 @@ namespace collapse   { Params params(); Analysis setupGrid(const Params&); Resul
 namespace shear      { Params params(); Analysis setupGrid(const Params&); Results results(const Analysis&, const Params&); }
 namespace stretch    { Params params(); Analysis setupGrid(const Params&); Results results(const Analysis&, const Params&); }
 namespace ibblock    { Params params(); Analysis setupGrid(const Params&); Results results(const Analysis&, const Params&); }
+namespace deepbeam   { Params params(); Analysis setupGrid(const Params&); Results results(const Analysis&, const Params&); }
+namespace ibshear    { Params params(); Analysis setupGrid(const Params&); Results results(const Analysis&, const Params&); }
 namespace ibcantilever { Params params(); Analysis setupGrid(const Params&); Results results(const Analysis&, const Params&); }
 namespace funnel     { Params params(); Analysis setupGrid(const Params&); Results results(const Analysis&, const Params&); }
 namespace footing    { Params params(); Analysis setupGrid(const Params&); Results results(const Analysis&, const Params&); }
@@ -38,6 +40,10 @@ const std::vector<Setup>& setupsTable() {
        stretch::params, stretch::setupGrid, stretch::results},
       {"ibblock", "contained block compressed through implicit rollers at an angle (seed 003 sec 5.1)",
        ibblock::params, ibblock::setupGrid, ibblock::results},
+      {"deepbeam", "deep cantilever under self weight, fixed by an implicit boundary (seed 003 sec 5.2)",
+       deepbeam::params, deepbeam::setupGrid, deepbeam::results},
+      {"ibshear", "simple shear held by a fixed implicit boundary anywhere in a cell (seed 003 sec 5.3)",
+       ibshear::params, ibshear::setupGrid, ibshear::results},
       {"ibcantilever", "slender cantilever under body force, fixed by an implicit boundary, at 0/45/90 degrees (seed 003 sec 5.4)",
        ibcantilever::params, ibcantilever::setupGrid, ibcantilever::results},
       {"footing", "rough rigid footing pushed 1 m into an elastic domain by an implicit boundary (seed 003 sec 5.5)",

@@ -15,6 +15,8 @@
 //   remedies    ghost penalty and load-step sub-division (off by default)
 //   methods     UL against PC and the GIMP domain updates on the collapse
 //               (seed 000 table 7), compaction with every update (fig 7)
+//   deepbeam    seed 003 tables II (points per cell, and 38^2) and III (h), both K2 couplings
+//   ibshear     seed 003 fig 16: shear stress error against xA = 0, 5, ..., 100 mm, both couplings
 // Usage:   ample_bench [suite ...] [--out DIR] [--quick]
 // Outputs: DIR/<suite>.csv (default docs/results); plots: plotting/plot_results.py
 //--------------------------------------------------------------------------
@@ -198,6 +200,23 @@ std::vector<Suite> suites(bool quick) {
                         A({"compaction", n, "cmType=2", "rhoY=1e12"}), A({"compaction", n, "mpType=1"}),
                         A({"compaction", n, "mpType=2", "domainUpdate=none"})}, {"error"}};
   all.push_back(sav);
+
+  // seed 003 sec 5.2: rA against the bilinear FE solution on the same grid (tables II, III);
+  // 38^2 beside 40^2: the paper's 40^2 row lies off its own 1/mp^2 trend, on our 38^2
+  Suite db{"deepbeam", {}, {"rA", "rA_mid", "vA_mm", "vA_FE_mm", "dofs", "points", "wall_seconds"}};
+  for (const char* k : {"ibK2=0", "ibK2=1"}) {
+    for (int mp : {3, 5, 10, 15, 20, 25, 38, 40})
+      if (!quick || mp <= 10) db.cases.push_back(A({"deepbeam", "mp=" + std::to_string(mp), k}));
+    for (const char* h : {"h=0.01", "h=0.005", "h=0.002", "h=0.001"})
+      if (!quick || std::string(h) != "h=0.001") db.cases.push_back(A({"deepbeam", "mp=4", h, k}));
+  }
+  all.push_back(db);
+  // seed 003 sec 5.3, fig 16: the fixed implicit boundary at xA = 0, 5, ..., 100 mm
+  Suite ibs{"ibshear", {}, {"r_sxy", "r_sxy_max", "ru", "sxy_mean_MPa", "wall_seconds"}};
+  for (const char* k : {"ibK2=0", "ibK2=1"})
+    for (int mm = 0; mm <= 100; mm += quick ? 25 : 5)
+      ibs.cases.push_back(A({"ibshear", "xA=" + std::to_string(mm / 1000.0), k}));
+  all.push_back(ibs);
   return all;
 }
 

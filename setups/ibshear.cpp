@@ -1,0 +1,79 @@
+//--------------------------------------------------------------------------
+// ibshear — simple shear of a body that a fixed implicit boundary holds anywhere in a
+//           cell (seed 003 sec 5.3, fig 16)
+//--------------------------------------------------------------------------
+// A 100 x 100 mm body (L = 0.1 m) in a grid of two 100 mm cells side by side
+// (2 x 1 cells, 0.2 x 0.1 m), from x = xA to xA + L. Its 20 x 20 standard MPM
+// points are 5 mm squares of the body itself (fillBlock over the body as one
+// cell with mp = 20; they move with xA, so the cells hold 20 (100 - xA)/100 and
+// 20 xA/100 columns). Left side x = xA: Fixed implicit boundary (u = 0). Right
+// side x = xA + L: Prescribed implicit boundary, du = (0, dv) (10 mm) in one load
+// step. Top and bottom (y = 0 and L, grid lines): u_x = 0 on the nodes
+// (fixDofs), u_y free; with one cell in y every node is on them, so only the
+// u_y of the (4 or 6) linked nodes are free. Small strain (formulation SS),
+// E = 1000 MPa, nu = 0.3, delta = 1e-6 h (h = 100 mm: delta = 1e-4 mm).
+// Exact: simple shear u_y = gamma (x - xA), gamma = dv / L = 0.1, u_x = 0,
+// sigma_xy = mu gamma = E / (2 (1 + nu)) gamma = 38.46 MPa (the paper's
+// E / (1 + nu) eps_xy with the tensor eps_xy = gamma / 2), sigma_xx = sigma_yy = 0.
+// The field is linear in x, so the bilinear grid holds it exactly: the error is
+// that of the implicit boundaries alone.
+// Outputs: results: r_sxy (eq 30 over the domain, volume weighted), r_sxy_max
+//          (the largest at a point), ru (eq 29), sxy_mean_MPa, points
+// Tests:   tests/test_ibSetups.cpp
+//--------------------------------------------------------------------------
+#include "ample/formCoord2D.h"
+#include "setupHelpers.h"
+#include <algorithm>
+#include <cmath>
+
+namespace ample::ibshear {
+
+static const double L = 0.1;  // side of the body and of the cells (m)
+
+Params params() {
+  Params P = commonParams(1);
+  setDefault(P, "tol", 1e-8);        // the round-off floor of K3 ~ 1/delta is ~2e-9 (docs)
+  setDefault(P, "mp", 20);           // 20 x 20 points over the body
+  setDefault(P, "mpType", 1);        // standard MPM
+  setDefault(P, "formulation", 3);   // SS: small strain, the paper's sec 2
+  setDefault(P, "E", 1e9);
+  setDefault(P, "nu", 0.3);
+  for (Param& p : P)
+    if (p.name == "mp") p.help("material points across the body in each direction (the paper: 20)");
+  P.push_back(Param("xA", 0.0).range(0, L)
+                  .help("position of the fixed left side in the two 100 mm cells (m), 0 to 0.1"));
+  P.push_back(Param("dv", 0.01).range(-0.05, 0.05).help("shear displacement of the right side (m)"));
+  for (const Param& p : ibParams()) P.push_back(p);
+  return P;
+}
+
+Analysis setupGrid(const Params& P) {
+  const double xA = get(P, "xA"), delta = get(P, "delta");
+  Analysis an = baseAnalysis(P);
+  an.mesh = formCoord2D(2, 1, 2 * L, L);
+  fixDofs(an.mesh, 0, [&](double, double Y) { return Y < 1e-9 * L || Y > L * (1 - 1e-9); });
+  addBoundary(an, {{xA, L}, {xA, 0.0}}, BoundaryType::Fixed, delta);          // left: solid at x > xA
+  addBoundary(an, {{xA + L, 0.0}, {xA + L, L}}, BoundaryType::Prescribed, delta).du = {{0.0, get(P, "dv")}};
+  ibSettings(an, P);
+  fillBlock(an.mpData, Vector2d(xA, 0.0), 1, 1, Vector2d(L, L), P, 0.0);    // the body's points
+  return an;
+}
+
+Results results(const Analysis& an, const Params& P) {
+  const double E = get(P, "E"), nu = get(P, "nu"), xA = get(P, "xA");
+  const double gamma = get(P, "dv") / L, sxy = E / (2 * (1 + nu)) * gamma;
+  double V = 0, r = 0, rMax = 0, ru = 0, mean = 0;
+  for (const MaterialPoint& mp : an.mpData) {
+    const double e = std::abs(mp.sig(3) - sxy) / std::abs(sxy);    // eq 30 at the point
+    const Vector2d ue(0.0, gamma * (mp.X0(0) - xA));
+    V += mp.vp;
+    r += mp.vp * e;
+    rMax = std::max(rMax, e);
+    ru += mp.vp * (mp.u - ue).norm() / ue.norm();                   // eq 29
+    mean += mp.vp * mp.sig(3);
+  }
+  return {{"r_sxy", r / V}, {"r_sxy_max", rMax}, {"ru", ru / V}, {"sxy_mean_MPa", mean / V / 1e6},
+          {"points", double(an.mpData.size())}};
+}
+
+}  // namespace ample::ibshear
