@@ -70,7 +70,7 @@ def deepbeam(db):
     for mp in sorted(two["0"]):
         a, b = two["0"][mp], two["1"].get(mp)
         paper = "%.4e" % PAPER_II[mp] if mp in PAPER_II else "-"
-        print("| %d^2 | %s | %.4e | %.4e | %.2f / %.2f |" % (mp, paper, a[1], b[1],
+        print("| %d^2 | %s | %.4e | %.4e | %.3f / %.3f |" % (mp, paper, a[1], b[1],
               float(a[2]["wall_seconds"]), float(b[2]["wall_seconds"])))
     print("\n| h (mm) | dofs ours | dofs paper | paper | ours ibK2=0 | ours ibK2=1 | run (s) 0 / 1 |")
     print("|---|---|---|---|---|---|---|")
@@ -78,7 +78,7 @@ def deepbeam(db):
     for h in sorted(three["0"], reverse=True):
         a, b = three["0"][h], three["1"][h]
         d, e = PAPER_III[h]
-        print("| %g | %d | %d | %.3e | %.4e | %.4e | %.2f / %.2f |" % (h * 1e3, float(a[2]["dofs"]), d, e,
+        print("| %g | %d | %d | %.3e | %.4e | %.4e | %.3f / %.3f |" % (h * 1e3, float(a[2]["dofs"]), d, e,
               a[1], b[1], float(a[2]["wall_seconds"]), float(b[2]["wall_seconds"])))
 
 
@@ -105,7 +105,7 @@ def ibshear(sh):
     print("|---|---|---|---|---|---|")
     for x in sorted(table):
         a, b = table[x]["0"], table[x]["1"]
-        print("| %g | %.4e | %.4e | %.2e | %.2e | %.4f / %.4f |" % (x, float(a["r_sxy"]), float(a["r_sxy_max"]),
+        print("| %g | %.4e | %.4e | %.2e | %.2e | %.3f / %.3f |" % (x, float(a["r_sxy"]), float(a["r_sxy_max"]),
               float(b["r_sxy"]), float(b["r_sxy_max"]), float(a["wall_seconds"]), float(b["wall_seconds"])))
 
 

@@ -24,7 +24,8 @@
 // (fixDofs): with small strain and standard MPM points, the sum over points of
 // B^T D B V_p and N rho g V_p is then exactly bilinear FE with 2 x 2 Gauss
 // quadrature. `reference=1` runs that model; results() solves it once more
-// (one linear solve: SS is linear) beside every run to compare.
+// (one linear solve: SS is linear) beside every run to compare (also when the
+// run itself takes formulation UL or PC: the reference stays small strain).
 // Outputs: results: rA = |v(A) - v_FE(A)| / |v_FE(A)| (tables II, III), both
 //          corners' errors, v(A) and v_FE(A) (mm), dofs (2 x linked nodes), points
 // Tests:   tests/test_ibSetups.cpp
@@ -65,7 +66,8 @@ Params params() {
                         "or its mid-height (L, L/2)"));
   P.push_back(Param("reference", 0).choice(0, {"IB", "FE"})
                   .help("IB: mp x mp points, the implicit fixed side (the paper's MPM); FE: points at "
-                        "the 2 x 2 Gauss positions and nodal fixity on x = 0 (bilinear FE)"));
+                        "the 2 x 2 Gauss positions and nodal fixity on x = 0 (bilinear FE); rA always "
+                        "compares with this model in small strain (SS), whatever the formulation"));
   for (const Param& p : ibParams()) P.push_back(p);
   return P;
 }
