@@ -48,17 +48,11 @@ static const double g = 10.0;                          // body force = rho g (m/
 static const double roomBelow = 0.06, roomRight = 0.03;  // grid room for the sag (m)
 
 Params params() {
-  Params P = commonParams(1);
+  Params P = seed003Params(1, 4);
   for (Param& p : P) {
     if (p.name == "lstps") p.integer(1, 1).help("load steps: one (the paper's; v(A) is its nodal solution)");
     if (p.name == "mp") p.integer(1, 40);            // table II goes to 40 x 40
   }
-  setDefault(P, "tol", 1e-8);        // the round-off floor of K3 ~ 1/delta is ~2e-9 (docs)
-  setDefault(P, "mp", 4);            // table III: 16 points per cell
-  setDefault(P, "mpType", 1);        // standard MPM
-  setDefault(P, "formulation", 3);   // SS: small strain, the paper's sec 2
-  setDefault(P, "E", 1e9);
-  setDefault(P, "nu", 0.3);
   P.push_back(Param("h", 0.01).range(2e-4, 0.05).help("grid spacing (m); L / h a whole number (L = 0.1 m)"));
   P.push_back(Param("b", 1e9).atLeast(0).help("body force in -y (N/m3; the paper's 1 N/mm2 = 1e9)"));
   P.push_back(Param("A", 0).choice(0, {"bottom", "mid"})
@@ -68,7 +62,6 @@ Params params() {
                   .help("IB: mp x mp points, the implicit fixed side (the paper's MPM); FE: points at "
                         "the 2 x 2 Gauss positions and nodal fixity on x = 0 (bilinear FE); rA always "
                         "compares with this model in small strain (SS), whatever the formulation"));
-  for (const Param& p : ibParams()) P.push_back(p);
   return P;
 }
 

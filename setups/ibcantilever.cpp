@@ -42,13 +42,8 @@ namespace ample::ibcantilever {
 static const double L = 0.1, d = 0.02, strip = 0.002;  // beam (m); free-end strip (m)
 
 Params params() {
-  Params P = commonParams(10);       // 20 steps meet a cell-crossing mechanism at 0, 90 (docs)
-  setDefault(P, "tol", 1e-8);        // the round-off floor of K3 ~ 1/delta is ~2e-9 (docs)
-  setDefault(P, "mp", 10);           // the paper: 100 points per cell
-  setDefault(P, "mpType", 1);        // standard MPM
-  setDefault(P, "formulation", 3);   // SS: small strain, the paper's sec 2
-  setDefault(P, "E", 1e9);
-  setDefault(P, "nu", 0.3);
+  Params P = seed003Params(10, 10);  // 10 steps: 20 meet a cell-crossing mechanism (docs);
+                                     // 10 x 10 points per cell: the paper's 100
   P.push_back(Param("theta", 0).range(-360, 360)
                   .help("rotation of the whole model to the grid (degrees, anticlockwise, about the free end's lower "
                         "corner, a grid node); the beam runs from the free end x' = 0 to the fixed end x' = 100 mm"));
@@ -57,7 +52,6 @@ Params params() {
   P.push_back(Param("b", 2e8).atLeast(0)
                   .help("body force at full load along the beam's own -y' (N/m3; the paper: 0.2 N/mm2 = 2e8); "
                         "the free-end figures are means over the points within 2 mm of the free end"));
-  for (const Param& p : ibParams()) P.push_back(p);
   return P;
 }
 

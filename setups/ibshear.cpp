@@ -31,19 +31,12 @@ namespace ample::ibshear {
 static const double L = 0.1;  // side of the body and of the cells (m)
 
 Params params() {
-  Params P = commonParams(1);
-  setDefault(P, "tol", 1e-8);        // the round-off floor of K3 ~ 1/delta is ~2e-9 (docs)
-  setDefault(P, "mp", 20);           // 20 x 20 points over the body
-  setDefault(P, "mpType", 1);        // standard MPM
-  setDefault(P, "formulation", 3);   // SS: small strain, the paper's sec 2
-  setDefault(P, "E", 1e9);
-  setDefault(P, "nu", 0.3);
+  Params P = seed003Params(1, 20);
   for (Param& p : P)
     if (p.name == "mp") p.help("material points across the body in each direction (the paper: 20)");
   P.push_back(Param("xA", 0.0).range(0, L)
                   .help("position of the fixed left side in the two 100 mm cells (m), 0 to 0.1"));
   P.push_back(Param("dv", 0.01).range(-0.05, 0.05).help("shear displacement of the right side (m)"));
-  for (const Param& p : ibParams()) P.push_back(p);
   return P;
 }
 

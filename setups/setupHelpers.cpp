@@ -7,6 +7,7 @@
 #include "ample/detMpPos.h"
 #include "ample/errors.h"
 #include "ample/shapefunc.h"
+#include <algorithm>
 #include <cmath>
 #include <string>
 
@@ -64,7 +65,8 @@ void forBlockPoints(const Vector2d& corner, int nelsx, int nelsy, const Vector2d
 void fillBlock(std::vector<MaterialPoint>& mpData, const Vector2d& corner, int nelsx, int nelsy,
                const Vector2d& h, const Params& P, double rho) {
   const int mp = int(get(P, "mp"));
-  mpData.reserve(mpData.size() + size_t(nelsx) * nelsy * mp * mp);  // no growth by doubling
+  const size_t n = mpData.size() + size_t(nelsx) * nelsy * mp * mp;
+  if (n > mpData.capacity()) mpData.reserve(std::max(n, 2 * mpData.capacity()));  // amortised
   forBlockPoints(corner, nelsx, nelsy, h, mp, [&](const Vector2d& x, const Vector2d& lp0) {
     mpData.push_back(blockPoint(x, lp0, P, rho));
   });
