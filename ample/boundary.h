@@ -27,9 +27,10 @@ enum class BoundaryType {
   PrescribedNormal  // u.n = du.n per load step, t free (the pushed side of seed 003 sec 5.1)
 };
 enum class SolidSide { Left, Right };  // where the solid lies, walking from x_0 to x_1
-// the inner integral of K2 over the d entries of [D1bar] (eqs 21, 26): Paper = int d d' = 1/2
-// as printed (the default); Consistent = 1, the variationally consistent (Nitsche) coupling
-// that reproduces a linear field exactly (docs/implicitBoundaries.md, "The factor 1/2")
+// the inner integral of K2 over the d entries of [D1bar] (eqs 21, 26): Consistent = 1 (the
+// default), the variationally consistent (Nitsche) coupling, exact for a linear field, which
+// the paper's own numbers need (table I at 0 degrees, fig 16); Paper = int d d' = 1/2 as the
+// extraction prints eqs 21, 26 (docs/implicitBoundaries.md, "The factor 1/2")
 enum class IbCoupling { Paper, Consistent };
 
 struct Boundary {
@@ -39,7 +40,7 @@ struct Boundary {
   double delta = 0;                   // band width delta of eq 16 (m); addBoundary: 1e-6 h
   std::vector<Vector2d> du;           // Prescribed*: displacement increment of load step lstp
                                       // in du[lstp - 1]; the last entry holds for later steps
-  IbCoupling coupling = IbCoupling::Paper;  // K2's int d d' (eqs 21, 26)
+  IbCoupling coupling = IbCoupling::Consistent;  // K2's int d d' (eqs 21, 26)
   std::vector<Vector2d> curveNormal;  // a curve's inward unit normal at each x_s (empty: the
                                       // segments' own); sec 4: n, t vary along the segment
   int segments() const { return int(x.size()) - 1; }

@@ -214,6 +214,7 @@ TEST_SUITE("ibStiffness") {
       const Setup* s = findSetup("ibblock");
       Params P = s->params();
       setDefault(P, "delta", dh);
+      setDefault(P, "ibK2", 0);
       RunLog log;
       Analysis an = s->setupGrid(P);
       solve(an, log);
@@ -236,12 +237,13 @@ TEST_SUITE("ibStiffness") {
       r.push_back(s->results(an, P));
     }
     for (const Results& x : r) {
-      CHECK(x[0].second < 1e-7);                                  // ru; paper table I: 1.6e-9 .. 1.2e-8
-      CHECK(x[1].second < 1e-7);                                  // r_sxx; paper: 5.8e-9 .. 1.3e-8
+      CHECK(x[0].second < 5e-8);            // ru; measured <= 1.3e-8; paper table I: 1.6e-9 .. 1.2e-8
+      CHECK(x[1].second < 5e-8);            // r_sxx; measured <= 9.5e-9; paper: 5.8e-9 .. 1.3e-8
       CHECK(std::abs(x[3].second + 13.4615) < 1e-3);             // mean sigma_x'x' (MPa)
     }
-    CHECK(std::abs(r[0][0].second - r[3][0].second) < 1e-6 * r[0][0].second);  // 0 and 90
-    CHECK(std::abs(r[0][1].second - r[3][1].second) < 1e-6 * r[0][1].second);
+    CHECK(r[0][0].second < 1e-12);                                // 0 and 90: exact (1.1e-15)
+    CHECK(r[3][0].second < 1e-12);
+    CHECK(std::abs(r[0][1].second - r[3][1].second) < 1e-12);
   }
 }
 
