@@ -162,6 +162,51 @@ TEST_SUITE("ibStiffness") {
     }
   }
 
+  TEST_CASE("ibStiffness: a roller on a circle with the curve's normals lets the circle turn") {
+    // a rigid rotation about the centre c is tangent to the circle; on a chord of it the
+    // interpolated normal (1 - r) n_s + r n_s+1 is exactly radial, so u.n = 0 at every Gauss
+    // point and eps(u) = 0: K2 + K2' + K3 of every cut cell annihilates u. With each chord's
+    // own normal u.n != 0 off the chord's middle and the roller holds the turn (the locking
+    // of docs/implicitBoundaries.md, funnel)
+    const Mesh mesh = formCoord2D(8, 8, 2.0, 2.0);
+    const Vector2d c(1.03, 0.97);
+    const double R = 0.6;
+    Boundary b{{}, {}, SolidSide::Left, 1e-4, {}, IbCoupling::Consistent, {}};
+    for (int k = 0; k <= 24; ++k) {                               // anticlockwise: solid inside
+      const Vector2d e(std::cos(2 * M_PI * k / 24), std::sin(2 * M_PI * k / 24));
+      b.x.push_back(c + R * e);
+      b.curveNormal.push_back(-e);
+    }
+    b.type.assign(24, BoundaryType::Roller);
+    Boundary straight = b;
+    straight.curveNormal.clear();
+    const Matrix3d C = elastic(1e9, 0.3);
+    double curved = 0, segments = 0;
+    int cells = 0;
+    for (const CutCell& cc : cutCells(mesh, b)) {
+      Eigen::Matrix<double, 8, 1> u;                              // u = (-(y - c_y), x - c_x)
+      for (int j = 0; j < 4; ++j) {
+        const Vector2d x = mesh.coord.row(mesh.etpl(cc.cell, j)).transpose() - c;
+        u.segment<2>(2 * j) = Vector2d(-x(1), x(0));
+      }
+      const Mat8 Kc = ibCellStiffness(mesh, b, cc, C), Ks = ibCellStiffness(mesh, straight, cc, C);
+      curved = std::max(curved, (Kc * u).norm() / (Kc.norm() * u.norm()));
+      segments = std::max(segments, (Ks * u).norm() / (Ks.norm() * u.norm()));
+      ++cells;
+    }
+    CHECK(cells >= 24);
+    CHECK(curved < 1e-12);     // the curve's normals: free to turn
+    CHECK(segments > 1e-3);    // each segment's own: held
+    // and a straight boundary given its own normal as curveNormal is the straight one
+    Boundary line{{Vector2d(0.3, 0.4), Vector2d(1.7, 1.1)}, {BoundaryType::Roller}, SolidSide::Left, 1e-4, {},
+                  IbCoupling::Consistent, {}};
+    Boundary lineCurve = line;
+    lineCurve.curveNormal = {inwardNormal(line, 0), inwardNormal(line, 0)};
+    for (const CutCell& cc : cutCells(mesh, line))
+      CHECK((ibCellStiffness(mesh, line, cc, C) - ibCellStiffness(mesh, lineCurve, cc, C)).norm() <=
+            1e-15 * ibCellStiffness(mesh, line, cc, C).norm());
+  }
+
   TEST_CASE("ibStiffness: no boundaries give nothing and change neither Kt nor fint") {
     const Mesh mesh = formCoord2D(2, 2, 2.0, 2.0);
     const ImplicitBoundaries ib = ibStiffness(mesh, {}, {}, 1, 1.0);

@@ -49,8 +49,14 @@ MUTANTS=(
   "ib-centroid-not-moved|setups/setupHelpers.cpp|s/blockPoint\(x \+ in\.centroid, /blockPoint(x, /"
   "cutcells-wrong-side|ample/cutCells.cpp|s/\(n\(k\) > 0 \? 0 : 1\)/(n(k) > 0 ? 1 : 0)/"
   # K2 with the free part only (int d d' dropped) and K2 without its transpose (tests/test_ibStiffness.cpp)
-  "ib-k2-no-d-dp|ample/ibStiffness.cpp|s/\(bi\.dp \* a \+ bi\.d_dp \* m\)/(bi.dp * a)/"
+  "ib-k2-no-d-dp|ample/ibStiffness.cpp|s/\(bi\.dp \* a \+ dDp \* m\)/(bi.dp * a)/"
   "ib-k2-no-transpose|ample/ibStiffness.cpp|s/K \+= gw\[q\] \* len \* \(K2 \+ K2\.transpose\(\) \+ K3\);/K += gw[q] * len * (K2 + K3);/"
+  # the consistent coupling as the printed 1/2; curve normals ignored; the boundary force's sign;
+  # a prescribed boundary with no point to push, silently (tests/test_ibStiffness.cpp, test_ibMoving.cpp)
+  "ib-consistent-as-paper|ample/ibStiffness.cpp|s/\? bi\.d_dp : bi\.dp;/? bi.d_dp : bi.d_dp;/"
+  "ib-curve-normal-ignored|ample/boundary.h|s/if \(b\.curveNormal\.empty\(\)\) return inwardNormal\(b, s\);/return inwardNormal(b, s);/"
+  "ib-force-sign|ample/ibStiffness.cpp|s/r = t\.f - t\.k \* ue;/r = t.k * ue - t.f;/"
+  "ib-empty-prescribed-silent|ample/ibStiffness.cpp|s/      throw RunError\(\"implicit boundary \"/      if (false) throw RunError(\"implicit boundary \"/"
   # formulation=SS (seed 003): grad du as (I + grad du) - I; the volume of the moved configuration
   "ss-grad-via-dF|ample/detMPs.cpp|s/plusGradDu\(Matrix3d::Zero\(\), uvw, mp\), mp\)/plusGradDu(Matrix3d::Identity(), uvw, mp) - Matrix3d::Identity(), mp)/"
   "ss-volume-dF|ample/detMPs.cpp|s/t\.Vp = mp\.vp; +\/\/ V_p = V_p0/t.Vp = (Matrix3d::Identity() + H).determinant() * mp.vp;/"
