@@ -5,6 +5,10 @@
 // dS/dX = dS(X) S(Y), dS/dY = S(X) dS(Y), from SvpMPM (mpType 1, eqs 23-24)
 // or SvpGIMP (mpType 2, eqs 25-26) in each direction. CPDI1/CPDI2 (mpType 3/4,
 // seed 001 sec 2 (iv)): SvpCPDI from the grid basis at the domain corners.
+// A general mesh (docs/meshes.md): MPM from the cell basis of the point's cell
+// (cellBasis: barycentric / inverse isoparametric map, grad N = J^-T dN/dxi);
+// CPDI from the cell basis at each corner in the cell that holds it (cellOf);
+// GIMP: InputError. gridBasis on a general mesh: N_node(x) in the cell of x.
 // Inputs:  coord (nodes x 2) · mp.nIN, mp.nn, mp.mpC, mp.lp, mp.mpType · h (2)
 // Outputs: mp.Svp (nn) · mp.dSvp (2 x nn), gradients with respect to X~ (start of step)
 // Tests:   tests/test_basis.cpp

@@ -23,6 +23,7 @@
 // See ample.h for inputs and outputs.
 //--------------------------------------------------------------------------
 #include "ample.h"
+#include "cellSearch.h"
 #include "detExtForce.h"
 #include "detFDoFs.h"
 #include "detMPs.h"
@@ -134,12 +135,34 @@ void solve(Analysis& an, RunLog& log, const RunOptions& opt) {
 // the helpers of the page above
 //--------------------------------------------------------------------------
 
+// a general mesh (docs/meshes.md): every point in a cell, and none of what needs the
+// regular grid: GIMP domains, the ghost penalty's faces, the implicit boundaries' cut cells
+static void checkGeneralMesh(const Analysis& an) {
+  const std::string mesh = std::string("the background mesh is a ") + meshName(an.mesh) +
+                           " of " + std::to_string(an.mesh.nels()) + " cells";
+  if (!an.boundaries.empty())
+    throw InputError("implicit boundaries (seed 003) need the regular grid (cutCells); " + mesh);
+  if (an.ghost > 0) throw InputError("ghost=" + std::to_string(an.ghost) + ": the ghost penalty "
+                                     "needs the regular grid (its faces); " + mesh + "; use ghost=0");
+  for (size_t p = 0; p < an.mpData.size(); ++p) {
+    const MaterialPoint& mp = an.mpData[p];
+    if (mp.mpType == MpType::GIMP)
+      throw InputError("mpType=2 (GIMP) needs the regular grid; " + mesh +
+                       " (use mpType=1 MPM, 3 CPDI1 or 4 CPDI2)");
+    if (findCell(an.mesh, mp.mpC) < 0)
+      throw InputError("material point " + std::to_string(p) + " at (" + std::to_string(mp.mpC(0)) +
+                       ", " + std::to_string(mp.mpC(1)) + ") lies in no cell of " + mesh.substr(4));
+  }
+  if (an.mpData.empty()) throw InputError("the setup has no material points");
+}
+
 // a setup's problem must be consistent before any work (InputError: exit 2)
 static void checkAnalysis(const Analysis& an) {
   for (const BC& c : an.mesh.bc)
     if (c.dof < 0 || c.dof >= an.mesh.nDoF())
       throw InputError("boundary condition on degree of freedom " + std::to_string(c.dof) +
                        ", which does not exist: allowed [0, " + std::to_string(an.mesh.nDoF() - 1) + "]");
+  if (!an.mesh.regular()) return checkGeneralMesh(an);
   const Vector2d lo = an.mesh.origin,
                  hi = lo + Vector2d(an.mesh.nelsx * an.mesh.h(0), an.mesh.nelsy * an.mesh.h(1));
   for (size_t p = 0; p < an.mpData.size(); ++p) {

@@ -12,7 +12,8 @@
 // are left out.
 // Inputs:  mesh (nelsx, nelsy, origin, h) · b (boundary)
 // Outputs: the cut cells (segment, cell, r0, r1), in that order
-// Tests:   tests/test_boundary.cpp
+// The grid lines are those of the regular grid: a general mesh gets an InputError.
+// Tests:   tests/test_boundary.cpp, tests/test_mesh.cpp (refusal)
 //--------------------------------------------------------------------------
 #pragma once
 #include "boundary.h"

@@ -22,7 +22,7 @@ std::vector<int> activeCellDoFs(const Mesh& mesh) {
   std::vector<char> isFree(mesh.nDoF(), 0);
   for (int e = 0; e < mesh.nels(); ++e)
     if (mesh.eInA[e])
-      for (int a = 0; a < nen; ++a)
+      for (int a = 0; a < mesh.cellNodes(); ++a)
         for (int i = 0; i < nD; ++i) isFree[dof(mesh.etpl(e, a), i)] = 1;
   return listFree(isFree, mesh);
 }

@@ -5,6 +5,7 @@
 //--------------------------------------------------------------------------
 #include "elemMPinfo.h"
 #include "MPMbasis.h"
+#include "cellSearch.h"
 #include "elemForMP.h"
 #include "errors.h"
 #include "domainCorners.h"
@@ -13,10 +14,26 @@
 
 namespace ample {
 
+// CPDI on a general mesh: the cells that hold the four corners, each moved 1e-6 of
+// the way towards the point so that a corner on an edge goes to the domain's side
+static int meshCellsOfCorners(const Mesh& mesh, const MaterialPoint& mp, std::array<int, MAXE>& eIN) {
+  cellOf(mesh, mp.mpC);  // throws if the point left the mesh
+  const Corners x = domainCorners(mp);
+  int ne = 0;
+  for (int c = 0; c < 4; ++c) {
+    const int e = cellOf(mesh, x.col(c) + 1e-6 * (mp.mpC - x.col(c)));
+    if (std::find(eIN.begin(), eIN.begin() + ne, e) == eIN.begin() + ne) eIN[ne++] = e;
+  }
+  std::sort(eIN.begin(), eIN.begin() + ne);
+  return ne;
+}
+
 // CPDI: the cells that contain the four domain corners (seed 001 sec 2 (iii));
 // a corner on a cell edge is taken into the cell on the domain's side of it,
 // a corner past the grid edge into the cell at the edge (the point must be inside)
+// (a general mesh: the corner must lie in a cell, cellOf)
 static int cellsOfCorners(const Mesh& mesh, const MaterialPoint& mp, std::array<int, MAXE>& eIN) {
+  if (!mesh.regular()) return meshCellsOfCorners(mesh, mp, eIN);
   std::array<int, MAXE> e;
   elemForMP(mesh, mp.mpC, Vector2d::Zero(), e);  // throws if the point left the grid
   const Corners x = domainCorners(mp);
@@ -56,6 +73,7 @@ int dropNullNodes(MaterialPoint& mp) {
 
 void elemMPinfo(Mesh& mesh, std::vector<MaterialPoint>& mpData) {
   mesh.eInA.assign(mesh.nels(), 0);
+  if (!mesh.regular()) buildCellSearch(mesh);  // a setup may have moved the mesh's nodes
   for (size_t p = 0; p < mpData.size(); ++p) {
     MaterialPoint& mp = mpData[p];
     try {

@@ -3,7 +3,8 @@
 //--------------------------------------------------------------------------
 // Seed 002 sec 4, table 1: called once at the start of each load step, with
 // the positions and domains at the start of the step (X~); marks the active
-// cells (those linked to any point) for detFDoFs. GIMP/MPM points take the
+// cells (those linked to any point) for detFDoFs. A general mesh (docs/meshes.md)
+// gets its bucket grid rebuilt first (buildCellSearch: a setup may move the nodes). GIMP/MPM points take the
 // cells their domain overlaps (elemForMP); CPDI points the cells holding their
 // four domain corners (seed 001 sec 2 (iii)). A node of those cells whose basis
 // value and gradient are both zero at the point is not linked (dropNullNodes).

@@ -4,6 +4,7 @@
 // See ghostPenalty.h for the method, its sources, inputs and outputs.
 //--------------------------------------------------------------------------
 #include "ghostPenalty.h"
+#include "errors.h"
 #include <cmath>
 
 namespace ample {
@@ -31,6 +32,7 @@ bool edgeCell(const Mesh& mesh, int i, int j) {
 }  // namespace
 
 SpMat ghostPenalty(const Mesh& mesh, double gamma, double E) {
+  if (!mesh.regular()) throw InputError("the ghost penalty needs the regular grid (its faces); use ghost=0");
   std::vector<Eigen::Triplet<double>> trip;
   const double gp = 1.0 / std::sqrt(3.0);                        // 2-point Gauss on [-1, 1]
   for (int j = 0; j < mesh.nelsy; ++j)

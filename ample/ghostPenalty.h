@@ -21,7 +21,8 @@
 // Kt += K_gp, fint += K_gp uvw; it does nothing when K_gp is empty (ghost = 0).
 // Inputs:  mesh (etpl, eInA, nelsx, nelsy, h, coord) · gamma · E | K_gp · uvw
 // Outputs: K_gp (nDoF x nDoF), empty when no face qualifies | Kt, fint
-// Tests:   tests/test_robustness.cpp
+// The faces follow the regular grid: a general mesh gets an InputError.
+// Tests:   tests/test_robustness.cpp, tests/test_mesh.cpp (refusal)
 //--------------------------------------------------------------------------
 #pragma once
 #include "stiffnessPattern.h"

@@ -21,7 +21,7 @@ using Eigen::Vector2d;
 using Eigen::Vector3d;
 
 constexpr int nD = 2;        // spatial dimensions of the background grid
-constexpr int nen = 4;       // nodes per grid cell (bi-linear quadrilateral)
+constexpr int nen = 4;       // most nodes per cell (bi-linear quadrilateral; a triangle has 3)
 constexpr int MAXN = 16;     // most nodes one point may influence (4 x 4)
 constexpr int MAXE = 9;      // most cells one point domain may overlap (3 x 3)
 
@@ -73,18 +73,36 @@ struct BC {
   double value;  // prescribed displacement increment per load step
 };
 
+// the kind of background mesh (docs/meshes.md): the regular grid of formCoord2D (fast
+// cell search by the spacing, GIMP) or a general mesh of one cell shape (generalMesh)
+enum class MeshType { Grid = 0, Tri3 = 3, Quad4 = 4 };
+
+// bucket grid over a general mesh's bounding box (cellSearch.cpp): bucket (i, j) lists
+// the cells whose bounding boxes overlap it, ascending, in cells[start[b] .. start[b+1])
+struct CellSearch {
+  Vector2d lo = Vector2d::Zero(), size = Vector2d::Zero();  // box corner, bucket size
+  int nbx = 0, nby = 0;                                     // buckets in x and y
+  std::vector<int> start, cells;
+  bool empty() const { return start.empty(); }
+};
+
 struct Mesh {
-  int nelsx = 0, nelsy = 0;                            // cells in x and y
+  MeshType type = MeshType::Grid;                      // regular grid or general mesh
+  int nelsx = 0, nelsy = 0;                            // cells in x and y (regular grid)
   Vector2d origin = Vector2d::Zero();                  // lower-left corner of the grid
-  Eigen::Matrix<int, Eigen::Dynamic, nen, Eigen::RowMajor> etpl;     // cell topology
+  Eigen::Matrix<int, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor> etpl;  // cell topology:
+                                                       // nels x 4 (grid, Quad4) or x 3 (Tri3)
   Eigen::Matrix<double, Eigen::Dynamic, nD, Eigen::RowMajor> coord;  // nodal coordinates
-  Vector2d h = Vector2d::Zero();                       // grid spacing in each direction
+  Vector2d h = Vector2d::Zero();                       // grid spacing (regular grid only)
   std::vector<BC> bc;                                  // Dirichlet conditions
   std::vector<char> eInA;                              // 1 = active cell (holds points)
+  CellSearch search;                                   // general mesh: its bucket grid
 
   int nodes() const { return int(coord.rows()); }
   int nels() const { return int(etpl.rows()); }
   int nDoF() const { return nD * nodes(); }
+  int cellNodes() const { return int(etpl.cols()); }   // 4, or 3 for triangles
+  bool regular() const { return type == MeshType::Grid; }
 };
 
 }  // namespace ample

@@ -28,14 +28,15 @@ void makeVtk(const Mesh& mesh, const std::string& path, const Eigen::VectorXd& u
   s << "# vtk DataFile Version 2.0\nample-cpp background mesh\nASCII\n"
     << "DATASET UNSTRUCTURED_GRID\nPOINTS " << mesh.nodes() << " double\n";
   for (int n = 0; n < mesh.nodes(); ++n) s << mesh.coord(n, 0) << " " << mesh.coord(n, 1) << " 0\n";
-  s << "CELLS " << mesh.nels() << " " << mesh.nels() * (nen + 1) << "\n";
+  s << "CELLS " << mesh.nels() << " " << mesh.nels() * (mesh.cellNodes() + 1) << "\n";
   for (int e = 0; e < mesh.nels(); ++e) {
-    s << nen;
-    for (int a = 0; a < nen; ++a) s << " " << mesh.etpl(e, a);
+    s << mesh.cellNodes();
+    for (int a = 0; a < mesh.cellNodes(); ++a) s << " " << mesh.etpl(e, a);
     s << "\n";
   }
   s << "CELL_TYPES " << mesh.nels() << "\n";
-  for (int e = 0; e < mesh.nels(); ++e) s << "9\n";  // VTK_QUAD
+  const char* type = mesh.cellNodes() == 3 ? "5\n" : "9\n";  // VTK_TRIANGLE, VTK_QUAD
+  for (int e = 0; e < mesh.nels(); ++e) s << type;
   if (uvw.size() == mesh.nDoF()) {
     s << "POINT_DATA " << mesh.nodes() << "\nVECTORS displacement double\n";
     for (int n = 0; n < mesh.nodes(); ++n) s << uvw(dof(n, 0)) << " " << uvw(dof(n, 1)) << " 0\n";
