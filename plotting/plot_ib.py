@@ -15,6 +15,7 @@ import matplotlib
 
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
+from bench_csv import param  # noqa: E402
 
 OUT = sys.argv[1] if len(sys.argv) > 1 else "docs/results"
 PAPER_II = {3: 1.6653e-3, 5: 5.9450e-4, 10: 1.4812e-4, 15: 6.5788e-5, 20: 3.6998e-5,
@@ -29,12 +30,6 @@ def rows(name):
     return list(csv.DictReader(open(path))) if os.path.exists(path) else []
 
 
-def param(r, key, default=None):
-    for kv in r["parameters"].split():
-        k, v = kv.split("=")
-        if k == key:
-            return v
-    return default
 
 
 def deepbeam(db):

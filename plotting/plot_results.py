@@ -14,6 +14,7 @@ import matplotlib
 
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
+from bench_csv import param  # noqa: E402
 
 OUT = sys.argv[1] if len(sys.argv) > 1 else "docs/results"
 NAMES = {1: "MPM", 2: "GIMP", 3: "CPDI1", 4: "CPDI2"}
@@ -26,12 +27,6 @@ def rows(name):
     return list(csv.DictReader(open(path)))
 
 
-def param(r, key, default=None):
-    for kv in r["parameters"].split():
-        k, v = kv.split("=")
-        if k == key:
-            return v
-    return default
 
 
 def num(r, key):

@@ -34,21 +34,12 @@ Params params() {
   return P;
 }
 
-// rotation by theta degrees, exact at multiples of 90
-static Eigen::Matrix2d rotation(double theta) {
-  double c = std::cos(theta * M_PI / 180), s = std::sin(theta * M_PI / 180);
-  if (std::fmod(theta, 90.0) == 0.0) c = std::round(c), s = std::round(s);
-  Eigen::Matrix2d R;
-  R << c, -s, s, c;
-  return R;
-}
-
 Analysis setupGrid(const Params& P) {
   const double h = get(P, "h"), delta = get(P, "delta");
   const int N = int(std::ceil((L / std::sqrt(2.0) + h) / h - 1e-9));  // half the grid, in cells
   Analysis an = baseAnalysis(P);
   an.mesh = formCoord2D(2 * N, 2 * N, 2 * N * h, 2 * N * h);
-  const Eigen::Matrix2d R = rotation(get(P, "theta"));
+  const Eigen::Matrix2d R = rotationDegrees(get(P, "theta"));
   const Vector2d c(N * h, N * h);                                   // centre of the block
   auto corner = [&](double x, double y) { return Vector2d(c + R * Vector2d(x - L / 2, y - L / 2)); };
   const Vector2d a = corner(0, 0), b = corner(L, 0), d = corner(L, L), e = corner(0, L);
@@ -63,7 +54,7 @@ Analysis setupGrid(const Params& P) {
 
 Results results(const Analysis& an, const Params& P) {
   const double E = get(P, "E"), nu = get(P, "nu"), eps = get(P, "du") / L;
-  const Eigen::Matrix2d R = rotation(get(P, "theta"));
+  const Eigen::Matrix2d R = rotationDegrees(get(P, "theta"));
   const double N = std::ceil((L / std::sqrt(2.0) + get(P, "h")) / get(P, "h") - 1e-9);
   const Vector2d a = Vector2d(N, N) * get(P, "h") - R * Vector2d(L / 2, L / 2);  // fixed corner
   const double k = -eps * E / ((1 + nu) * (1 - 2 * nu));

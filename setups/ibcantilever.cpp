@@ -55,15 +55,6 @@ Params params() {
   return P;
 }
 
-// rotation by theta degrees, exact at multiples of 90
-static Eigen::Matrix2d rotation(double theta) {
-  double c = std::cos(theta * M_PI / 180), s = std::sin(theta * M_PI / 180);
-  if (std::fmod(theta, 90.0) == 0.0) c = std::round(c), s = std::round(s);
-  Eigen::Matrix2d R;
-  R << c, -s, s, c;
-  return R;
-}
-
 // the Timoshenko deflection (m, along -y') at x' from the free end under q = b d
 static double beamTheory(double x, double b, double E, double nu) {
   const double q = b * d, Ep = E / (1 - nu * nu), I = d * d * d / 12, G = E / (2 * (1 + nu));
@@ -77,7 +68,7 @@ static Layout layout(const Params& P) {
   const double h = get(P, "h"), w = beamTheory(0, get(P, "b"), get(P, "E"), get(P, "nu"));
   const double slope = 2 * w / L;                                    // > the tip rotation
   const double x0 = -(1.3 * slope * d + 2 * h), y0 = -(1.3 * w + 2 * h);  // room to deflect
-  const Eigen::Matrix2d R = rotation(get(P, "theta"));
+  const Eigen::Matrix2d R = rotationDegrees(get(P, "theta"));
   Vector2d lo = Vector2d::Constant(INFINITY), hi = -lo;
   for (const Vector2d& c : {Vector2d(x0, y0), Vector2d(L + 2 * h, y0), Vector2d(L + 2 * h, d + 2 * h),
                             Vector2d(x0, d + 2 * h)}) {
@@ -90,7 +81,7 @@ static Layout layout(const Params& P) {
 Analysis setupGrid(const Params& P) {
   const double h = get(P, "h"), b = get(P, "b");
   const Layout g = layout(P);
-  const Eigen::Matrix2d R = rotation(get(P, "theta"));
+  const Eigen::Matrix2d R = rotationDegrees(get(P, "theta"));
   Analysis an = baseAnalysis(P);
   an.mesh = formCoord2D(g.nelsx, g.nelsy, g.nelsx * h, g.nelsy * h);
   auto at = [&](double x, double y) { return Vector2d(g.O + R * Vector2d(x, y)); };

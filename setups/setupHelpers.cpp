@@ -98,6 +98,14 @@ Boundary& addBoundary(Analysis& an, std::vector<Vector2d> x, BoundaryType type,
   return addBoundary(an, std::move(x), std::vector<BoundaryType>(nSeg, type), deltaOverH, solid);
 }
 
+Eigen::Matrix2d rotationDegrees(double theta) {
+  double c = std::cos(theta * M_PI / 180), s = std::sin(theta * M_PI / 180);
+  if (std::fmod(theta, 90.0) == 0.0) c = std::round(c), s = std::round(s);
+  Eigen::Matrix2d R;
+  R << c, -s, s, c;
+  return R;
+}
+
 Params ibParams() {
   return {Param("delta", 1e-6).range(1e-12, 0.5).help("band width of eq 16 as a fraction of h"),
           Param("ibK2", 1).choice(0, {"paper", "consistent"})

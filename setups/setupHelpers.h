@@ -51,6 +51,10 @@ Boundary& addBoundary(Analysis& an, std::vector<Vector2d> x, BoundaryType type,
 Boundary& addBoundary(Analysis& an, std::vector<Vector2d> x, std::vector<BoundaryType> type,
                       double deltaOverH = 1e-6, SolidSide solid = SolidSide::Left);
 
+// rotation by theta degrees (anticlockwise), exact at multiples of 90 (so that a model turned
+// by 90 degrees is the same discretisation)
+Eigen::Matrix2d rotationDegrees(double theta);
+
 // the parameters of every setup with implicit boundaries: delta (band width / h, eq 16)
 // and ibK2 (the K2 coupling: 0 paper, 1 consistent); ibSettings applies ibK2 to an's boundaries
 Params ibParams();
