@@ -32,6 +32,16 @@ def rows(name):
 
 
 
+def finish(fig, axes, name, legend_size):
+    """grid and legend on every panel, then docs/results/<name>"""
+    for a in axes:
+        a.grid(True, which="both", alpha=0.3)
+        a.legend(fontsize=legend_size)
+    fig.tight_layout()
+    fig.savefig(os.path.join(OUT, name), dpi=110)
+    plt.close(fig)
+
+
 def deepbeam(db):
     series = {}  # (table, coupling) -> [(x, rA, row)]
     for r in db:
@@ -54,12 +64,7 @@ def deepbeam(db):
     ax[0].set(xlabel="material points per cell", ylabel="rA = |v(A) - v_FE(A)| / |v_FE(A)|",
               title="deep beam, h = 10 mm (table II, fig 15a)")
     ax[1].set(xlabel="(dofs)^0.5", ylabel="rA", title="deep beam, 4^2 points per cell (table III, fig 15b)")
-    for a in ax:
-        a.grid(True, which="both", alpha=0.3)
-        a.legend(fontsize=8)
-    fig.tight_layout()
-    fig.savefig(os.path.join(OUT, "deepbeam.png"), dpi=110)
-    plt.close(fig)
+    finish(fig, ax, "deepbeam.png", 8)
     print("| points per cell | paper | ours ibK2=0 | ours ibK2=1 | run (s) 0 / 1 |\n|---|---|---|---|---|")
     two = {k: {p[0]: p for p in series.get(("II", k), [])} for k in ("0", "1")}
     for mp in sorted(two["0"]):
@@ -91,11 +96,7 @@ def ibshear(sh):
     ax.axhline(2e-8, color="k", lw=0.8, ls="--", label="paper: below 2e-8 at every xA")
     ax.set(xlabel="xA: position of the fixed implicit boundary (mm)", ylabel="r_sxy",
            title="simple shear, 2 cells of 100 mm, 20 x 20 points (fig 16)")
-    ax.grid(True, which="both", alpha=0.3)
-    ax.legend(fontsize=7)
-    fig.tight_layout()
-    fig.savefig(os.path.join(OUT, "ibshear.png"), dpi=110)
-    plt.close(fig)
+    finish(fig, [ax], "ibshear.png", 7)
     print("\n| xA (mm) | r_sxy ibK2=0 | max ibK2=0 | r_sxy ibK2=1 | max ibK2=1 | run (s) 0 / 1 |")
     print("|---|---|---|---|---|---|")
     for x in sorted(table):
