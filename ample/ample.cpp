@@ -8,7 +8,8 @@
 //     lstp/lstps), detFDoFs
 //     Newton-Raphson: while (fErr > tol and NRit < NRitMax) or NRit < 2
 //       linSolve, detMPs, oobf = fext - fint + frct, fErr (eq 35)
-//     updateMPs
+//     updateMPs (the finite element mode, an.fem, moves the mesh with the
+//     nodes here: the one line where FEM and MPM differ)
 //     postPro
 // A step that ends with fErr > tol (or a NaN, or a singular stiffness) stops the
 // run (exit 1): the state of the last converged step is kept and written, the
@@ -122,6 +123,7 @@ void solve(Analysis& an, RunLog& log, const RunOptions& opt) {
     an.uvw = uvw;
     an.ibForce = boundaryForces(ib, uvw, int(an.boundaries.size()));  // seed 003 (none: empty)
     timed(T.updateMPs, updateMPs, mesh, uvw, an.domainUpdate, mpData);
+    if (an.fem) moveMesh(mesh, uvw);                                 // FEM: the mesh follows (MPM: reset)
     moveBoundaries(an.boundaries, lstp, inc.bcScale(an.lstps));      // seed 003: by their du
     if (!inc.last) continue;                                         // (remedy: a first half)
     if (an.afterStep) an.afterStep(an, lstp);                        // setup's hook
@@ -162,6 +164,14 @@ static void checkAnalysis(const Analysis& an) {
     if (c.dof < 0 || c.dof >= an.mesh.nDoF())
       throw InputError("boundary condition on degree of freedom " + std::to_string(c.dof) +
                        ", which does not exist: allowed [0, " + std::to_string(an.mesh.nDoF() - 1) + "]");
+  if (an.fem && an.mesh.regular())
+    throw InputError("the finite element mode (fem=1) moves the mesh: it needs a general mesh "
+                     "(generalMesh), not the regular grid, whose cell search uses its spacing");
+  if (an.fem)
+    for (const MaterialPoint& mp : an.mpData)
+      if (mp.mpType != MpType::MPM)
+        throw InputError("the finite element mode (fem=1) takes standard points (mpType=1 MPM) "
+                         "as its integration points");
   if (!an.mesh.regular()) return checkGeneralMesh(an);
   const Vector2d lo = an.mesh.origin,
                  hi = lo + Vector2d(an.mesh.nelsx * an.mesh.h(0), an.mesh.nelsy * an.mesh.h(1));

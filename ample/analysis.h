@@ -32,6 +32,7 @@ struct Analysis {
   int ghostFrom = 0;                  // first load step the penalty was needed (0: not yet)
   Formulation formulation = Formulation::UL;        // frame of equilibrium (seed 000)
   DomainUpdate domainUpdate = DomainUpdate::Uii;    // GIMP domain update (seed 002 eq 34)
+  bool fem = false;                   // finite element mode: the mesh moves with the nodes (moveMesh)
   std::vector<Boundary> boundaries;                 // implicit boundaries (seed 003); empty: none
   Eigen::VectorXd frct;                             // reactions of the last converged step
   Eigen::VectorXd uvw;                              // its converged displacement increment

@@ -23,4 +23,9 @@ void updateMPs(const Mesh& mesh, const Eigen::VectorXd& uvw, DomainUpdate method
   }
 }
 
+void moveMesh(Mesh& mesh, const Eigen::VectorXd& uvw) {
+  for (int n = 0; n < mesh.nodes(); ++n)
+    for (int i = 0; i < nD; ++i) mesh.coord(n, i) += uvw(dof(n, i));
+}
+
 }  // namespace ample

@@ -10,7 +10,11 @@
 // Inputs:  mesh · uvw (nDoF) converged displacement increment of the step ·
 //          method (GIMP domain update) · mpData
 // Outputs: mpData (mpC, u, vp, lp, st, xc, Fn, epsEn) updated
-// Tests:   tests/test_updateMPs.cpp
+// moveMesh (finite element mode, Analysis::fem): coord += uvw, so the mesh
+//   follows the body and every point keeps its cell and local coordinates
+//   (x_p = sum_v S_vp x_v before and after): updated Lagrangian FEM with the
+//   points as integration points. MPM resets the mesh instead (coord kept).
+// Tests:   tests/test_updateMPs.cpp, tests/test_femode.cpp
 //--------------------------------------------------------------------------
 #pragma once
 #include "mpData.h"
@@ -19,5 +23,6 @@ namespace ample {
 
 void updateMPs(const Mesh& mesh, const Eigen::VectorXd& uvw, DomainUpdate method,
                std::vector<MaterialPoint>& mpData);
+void moveMesh(Mesh& mesh, const Eigen::VectorXd& uvw);
 
 }  // namespace ample

@@ -72,6 +72,86 @@ void fillBlock(std::vector<MaterialPoint>& mpData, const Vector2d& corner, int n
   });
 }
 
+namespace {
+double cross2(const Vector2d& a, const Vector2d& b) { return a(0) * b(1) - a(1) * b(0); }
+// the bilinear map of quadrilateral X (corners as columns) at xi, and its det J
+Vector2d quadMap(const Eigen::Matrix<double, 2, 4>& X, double xi, double eta, double* detJ) {
+  static const double xa[4] = {-1, 1, 1, -1}, ea[4] = {-1, -1, 1, 1};
+  Vector2d x = Vector2d::Zero(), dxi = x, deta = x;
+  for (int a = 0; a < 4; ++a) {
+    x += 0.25 * (1 + xa[a] * xi) * (1 + ea[a] * eta) * X.col(a);
+    dxi += 0.25 * xa[a] * (1 + ea[a] * eta) * X.col(a);
+    deta += 0.25 * ea[a] * (1 + xa[a] * xi) * X.col(a);
+  }
+  if (detJ) *detJ = cross2(dxi, deta);
+  return x;
+}
+MaterialPoint cellPoint(const Vector2d& x, double V, const Params& P, double rho) {
+  MaterialPoint pt = blockPoint(x, Vector2d::Constant(0.5 * std::sqrt(V)), P, rho);
+  pt.vp0 = pt.vp = V;
+  pt.mpM = rho * V;
+  return pt;
+}
+}  // namespace
+
+void fillCells(std::vector<MaterialPoint>& mpData, const Mesh& mesh, const Params& P, double rho,
+               int triPoints) {
+  const MpType type = MpType(int(get(P, "mpType")));
+  if (mesh.regular()) throw InputError("fillCells: a general mesh (generalMesh) is needed");
+  if (type == MpType::GIMP) throw InputError("mpType=2 (GIMP) needs the regular grid");
+  if (triPoints != 1 && triPoints != 3) throw InputError("fillCells: triPoints 1 or 3");
+  for (int e = 0; e < mesh.nels(); ++e) {
+    Eigen::Matrix<double, 2, 4> X = Eigen::Matrix<double, 2, 4>::Zero();
+    for (int a = 0; a < mesh.cellNodes(); ++a) X.col(a) = mesh.coord.row(mesh.etpl(e, a)).transpose();
+    if (mesh.cellNodes() == 3) {
+      if (type != MpType::MPM) throw InputError("fillCells: triangles take standard MPM points only");
+      const double A = 0.5 * cross2(X.col(1) - X.col(0), X.col(2) - X.col(0));
+      if (triPoints == 1) mpData.push_back(cellPoint((X.col(0) + X.col(1) + X.col(2)) / 3, A, P, rho));
+      else
+        for (int a = 0; a < 3; ++a)
+          mpData.push_back(cellPoint((2.0 / 3) * X.col(a) + (X.col((a + 1) % 3) + X.col((a + 2) % 3)) / 6,
+                                     A / 3, P, rho));
+      continue;
+    }
+    const double g = 1.0 / std::sqrt(3.0);
+    for (int q = 0; q < 4; ++q) {                 // sub-cells / Gauss points: x fastest
+      const double sx = (q == 1 || q == 3) ? 1 : -1, sy = q >= 2 ? 1 : -1;
+      double detJ = 0;
+      if (type == MpType::MPM) {
+        const Vector2d x = quadMap(X, sx * g, sy * g, &detJ);
+        mpData.push_back(cellPoint(x, detJ, P, rho));
+        continue;
+      }
+      Eigen::Matrix<double, 2, 4> xc;             // the sub-cell's corners, anticlockwise
+      const double x0 = sx < 0 ? -1 : 0, y0 = sy < 0 ? -1 : 0;
+      xc.col(0) = quadMap(X, x0, y0, nullptr);
+      xc.col(1) = quadMap(X, x0 + 1, y0, nullptr);
+      xc.col(2) = quadMap(X, x0 + 1, y0 + 1, nullptr);
+      xc.col(3) = quadMap(X, x0, y0 + 1, nullptr);
+      MaterialPoint pt = cellPoint(quadMap(X, x0 + 0.5, y0 + 0.5, nullptr),
+                                   0.5 * std::abs(cross2(xc.col(2) - xc.col(0), xc.col(3) - xc.col(1))), P, rho);
+      pt.xc = xc;
+      pt.st0.col(0) = 0.5 * (xc.col(1) - xc.col(0) + xc.col(2) - xc.col(3));
+      pt.st0.col(1) = 0.5 * (xc.col(3) - xc.col(0) + xc.col(2) - xc.col(1));
+      pt.st = pt.st0;
+      mpData.push_back(pt);
+    }
+  }
+}
+
+Reaction reactionOver(const Eigen::VectorXd& frct, const std::vector<int>& nodes) {
+  Reaction r;
+  for (int n : nodes) {
+    if (n < 0 || dof(n, 1) >= frct.size())
+      throw InputError("reactionOver: node " + std::to_string(n) + " outside [0, " +
+                       std::to_string(frct.size() / nD - 1) + "]");
+    const Vector2d f(frct(dof(n, 0)), frct(dof(n, 1)));
+    r.sum += f;
+    r.magnitudes += f.norm();
+  }
+  return r;
+}
+
 Boundary& addBoundary(Analysis& an, std::vector<Vector2d> x, std::vector<BoundaryType> type,
                       double deltaOverH, SolidSide solid) {
   if (x.size() < 2) throw InputError("addBoundary: a boundary needs at least two points");

@@ -43,6 +43,23 @@ void fillPolygon(std::vector<MaterialPoint>& mpData, const Vector2d& corner, int
                  int nelsy, const Vector2d& h, const Params& P, double rho,
                  const Polygon& solid);
 
+// points in every cell of a general mesh (docs/meshes.md, finite element mode):
+// quadrilaterals: 2 x 2, at the Gauss positions xi, eta = +-1/sqrt(3) with V = det J(xi)
+// (weight 1) for standard MPM, or with the four sub-quadrilaterals of the cell (split at
+// xi = 0, eta = 0) as domains for CPDI1 / CPDI2 (point at the sub-cell's centre,
+// xi = +-1/2; V = its area; CPDI1: s, t join its mid-edges); triangles: triPoints = 1
+// (centroid, V = A) or 3 (at 2/3, 1/6, 1/6, V = A/3), standard MPM only
+void fillCells(std::vector<MaterialPoint>& mpData, const Mesh& mesh, const Params& P, double rho,
+               int triPoints = 3);
+
+// the reactions of a set of nodes (frct: nDoF, as Analysis::frct): their vector sum and
+// the sum of their magnitudes, f = sum_n |(frct_x, frct_y)_n| (seed 001 sec 3.2, fig 7)
+struct Reaction {
+  Vector2d sum = Vector2d::Zero();
+  double magnitudes = 0;
+};
+Reaction reactionOver(const Eigen::VectorXd& frct, const std::vector<int>& nodes);
+
 // an implicit boundary through the points x, e.g.
 //   addBoundary(an, {{0, 0}, {1, 0.5}}, BoundaryType::Roller);
 //   addBoundary(an, {{1, 1}, {0, 1}}, BoundaryType::Prescribed).du = {{0, -0.05}};

@@ -24,6 +24,7 @@ namespace deepbeam   { Params params(); Analysis setupGrid(const Params&); Resul
 namespace ibshear    { Params params(); Analysis setupGrid(const Params&); Results results(const Analysis&, const Params&); }
 namespace ibcantilever { Params params(); Analysis setupGrid(const Params&); Results results(const Analysis&, const Params&); }
 namespace funnel     { Params params(); Analysis setupGrid(const Params&); Results results(const Analysis&, const Params&); }
+namespace doughnut   { Params params(); Analysis setupGrid(const Params&); Results results(const Analysis&, const Params&); }
 namespace footing    { Params params(); Analysis setupGrid(const Params&); Results results(const Analysis&, const Params&); }
 
 const std::vector<Setup>& setupsTable() {
@@ -50,6 +51,8 @@ const std::vector<Setup>& setupsTable() {
        footing::params, footing::setupGrid, footing::results},
       {"funnel", "elastic body forced through a curved funnel of implicit rollers (seed 003 sec 5.6)",
        funnel::params, funnel::setupGrid, funnel::results},
+      {"doughnut", "twist of a confined annulus on an annular quad mesh: MPM, CPDI1, CPDI2, FE mode (seed 001 sec 3.2)",
+       doughnut::params, doughnut::setupGrid, doughnut::results},
   };
   return table;
 }

@@ -1,0 +1,169 @@
+// Tests of the finite element mode (Analysis::fem, moveMesh), fillCells, reactionOver
+// and the doughnut setup (seed 001 sec 3.2). References independent of the code: the
+// closed-form Hencky stress and the exact nodal positions of a uniform stretch, a
+// hand-summed reaction, MPM with the same points (a single step must agree exactly),
+// equilibrium (the reactions of all supported nodes sum to zero without body force).
+#include "ample/errors.h"
+#include "ample/generalMesh.h"
+#include "ample/updateMPs.h"
+#include "testProblems.h"
+#include <doctest/doctest.h>
+#include <cmath>
+
+using namespace ample;
+using namespace ample::testing;
+
+namespace {
+// a 4 x 4 mesh of a 2 x 2 square with its interior and two edge nodes moved: distorted quads
+Mesh distorted() {
+  Mesh g = formCoord2D(4, 4, 2.0, 2.0);
+  Eigen::MatrixX2d x = g.coord;
+  const double d[][3] = {{6, 0.12, 0.07}, {7, -0.09, 0.1}, {8, 0.1, -0.11}, {11, -0.07, -0.06},
+                         {12, 0.05, 0.12}, {13, 0.11, -0.05}, {16, -0.1, 0.08}, {17, 0.06, -0.1},
+                         {18, -0.08, -0.07}, {1, 0.15, 0}, {9, 0, 0.13}};
+  for (const auto& r : d) x.row(int(r[0])) += Eigen::RowVector2d(r[1], r[2]);
+  return generalMesh(x, g.etpl);
+}
+Params elastic(double E, double nu, int mpType = 1) {
+  Params P = commonParams(1);
+  setDefault(P, "mpType", mpType);
+  setDefault(P, "E", E);
+  setDefault(P, "nu", nu);
+  return P;
+}
+double cross(const Vector2d& a, const Vector2d& b) { return a(0) * b(1) - a(1) * b(0); }
+}  // namespace
+
+TEST_SUITE("femode") {
+  TEST_CASE("fillCells: 2 x 2 Gauss points of distorted quads: volumes sum to the area, first moments exact") {
+    const Mesh m = distorted();
+    std::vector<MaterialPoint> mps;
+    fillCells(mps, m, elastic(1, 0), 2.0);
+    REQUIRE(mps.size() == 4 * size_t(m.nels()));
+    for (int e = 0; e < m.nels(); ++e) {  // per cell: area and centroid by the shoelace formula
+      double A = 0;
+      Vector2d S = Vector2d::Zero(), Sq = Vector2d::Zero();
+      for (int a = 0; a < 4; ++a) {
+        const Vector2d p = m.coord.row(m.etpl(e, a)).transpose(), q = m.coord.row(m.etpl(e, (a + 1) % 4)).transpose();
+        A += 0.5 * cross(p, q);
+        S += cross(p, q) * (p + q) / 6;
+      }
+      for (int k = 0; k < 4; ++k) Sq += mps[4 * e + k].vp * mps[4 * e + k].mpC;
+      double V = 0;
+      for (int k = 0; k < 4; ++k) V += mps[4 * e + k].vp;
+      CHECK(std::abs(V - A) <= 1e-14 * A);
+      CHECK((Sq - S).norm() <= 1e-14);  // 2 x 2 Gauss integrates x det J (bi-quadratic) exactly
+      CHECK(mps[4 * e].mpM == doctest::Approx(2.0 * mps[4 * e].vp).epsilon(1e-15));
+    }
+    std::vector<MaterialPoint> tri;
+    Eigen::MatrixX2d x(3, 2);
+    x << 0, 0, 2, 0.5, 0.4, 1.5;
+    fillCells(tri, generalMesh(x, (Eigen::MatrixXi(1, 3) << 0, 1, 2).finished()), elastic(1, 0), 1.0, 3);
+    REQUIRE(tri.size() == 3);
+    CHECK(std::abs(tri[0].vp + tri[1].vp + tri[2].vp - 0.5 * (2 * 1.5 - 0.5 * 0.4)) <= 1e-15);
+  }
+
+  TEST_CASE("fillCells: CPDI sub-cell domains tile each distorted quad (areas sum to the cell's)") {
+    const Mesh m = distorted();
+    for (int type : {3, 4}) {
+      std::vector<MaterialPoint> mps;
+      fillCells(mps, m, elastic(1, 0, type), 1.0);
+      double V = 0, A = 0;
+      for (const MaterialPoint& p : mps) {
+        V += p.vp;
+        CHECK(std::abs(std::abs(cross(p.st0.col(0), p.st0.col(1))) - p.vp) <= 1e-14);  // CPDI1 |s x t|
+      }
+      for (int e = 0; e < m.nels(); ++e)
+        for (int a = 0; a < 4; ++a)
+          A += 0.5 * cross(m.coord.row(m.etpl(e, a)).transpose(), m.coord.row(m.etpl(e, (a + 1) % 4)).transpose());
+      CHECK(std::abs(V - A) <= 1e-13);
+    }
+  }
+
+  TEST_CASE("FE mode patch test: distorted quads, uniform stretch on the boundary nodes over 3 steps") {
+    const double ex = 0.02, ey = -0.01, E = 1e6, nu = 0.3;
+    const int steps = 3;
+    Analysis an;
+    an.mesh = distorted();
+    an.fem = true;
+    an.lstps = steps;
+    const Eigen::MatrixX2d X0 = an.mesh.coord;
+    for (int n = 0; n < an.mesh.nodes(); ++n) {  // per step: d = diag(ex, ey) X0 on the boundary
+      const double X = X0(n, 0), Y = X0(n, 1);
+      if (X < 1e-9 || X > 2 - 1e-9 || Y < 1e-9 || Y > 2 - 1e-9)
+        an.mesh.bc.insert(an.mesh.bc.end(), {{dof(n, 0), ex * X}, {dof(n, 1), ey * Y}});
+    }
+    fillCells(an.mpData, an.mesh, elastic(E, nu), 0.0);
+    RunLog log;
+    solve(an, log);
+    REQUIRE(log.lastConverged == steps);
+    const double lx = 1 + steps * ex, ly = 1 + steps * ey;
+    const double lam = E * nu / ((1 + nu) * (1 - 2 * nu)), mu = E / (2 * (1 + nu));
+    const double e1 = std::log(lx), e2 = std::log(ly), J = lx * ly;
+    const Vector2d sig((lam * (e1 + e2) + 2 * mu * e1) / J, (lam * (e1 + e2) + 2 * mu * e2) / J);
+    double dSig = 0, dX = 0;
+    for (const MaterialPoint& mp : an.mpData)
+      dSig = std::max(dSig, std::max({std::abs(mp.sig(0) - sig(0)), std::abs(mp.sig(1) - sig(1)),
+                                      std::abs(mp.sig(3))}) / sig.cwiseAbs().maxCoeff());
+    for (int n = 0; n < an.mesh.nodes(); ++n)  // every node, interior ones too, on x = F X0
+      dX = std::max(dX, std::abs(an.mesh.coord(n, 0) - lx * X0(n, 0)) + std::abs(an.mesh.coord(n, 1) - ly * X0(n, 1)));
+    double dV = 0;
+    for (const MaterialPoint& mp : an.mpData) dV = std::max(dV, std::abs(mp.vp - J * mp.vp0) / mp.vp0);
+    MESSAGE("FE patch test: stress ", dSig, ", nodes ", dX, " m, volume ", dV);
+    CHECK(dSig <= 1e-10);
+    CHECK(dX <= 1e-12);
+    CHECK(dV <= 1e-12);
+    for (size_t p = 0; p < an.mpData.size(); ++p) CHECK(an.mpData[p].eIN[0] == int(p / 4));  // own cell
+  }
+
+  TEST_CASE("FE mode: one step equals MPM with the same Gauss points exactly; the mesh then carries uvw") {
+    Analysis a[2];
+    for (int k = 0; k < 2; ++k) {
+      Mesh g = formCoord2D(3, 3, 3.0, 3.0);
+      a[k].mesh = generalMesh(g.coord, g.etpl);
+      fixDofs(a[k].mesh, 0, [](double X, double) { return X < 1e-9; });
+      fixDofs(a[k].mesh, 1, [](double, double Y) { return Y < 1e-9; });
+      fixDofs(a[k].mesh, 1, [](double, double Y) { return Y > 3 - 1e-9; }, -0.3);  // 10 % squeeze
+      a[k].fem = k == 1;
+      Params P = elastic(1e6, 0.3);
+      setDefault(P, "cmType", 2);
+      setDefault(P, "rhoY", 2e4);  // von Mises, yields in the step
+      fillCells(a[k].mpData, a[k].mesh, P, 0.0);
+      RunLog log;
+      solve(a[k], log);
+    }
+    double dS = 0, dX = 0;
+    for (size_t p = 0; p < a[0].mpData.size(); ++p) {
+      dS = std::max(dS, (a[0].mpData[p].sig - a[1].mpData[p].sig).cwiseAbs().maxCoeff());
+      dX = std::max(dX, (a[0].mpData[p].mpC - a[1].mpData[p].mpC).cwiseAbs().maxCoeff());
+    }
+    CHECK(dS == 0.0);
+    CHECK(dX == 0.0);
+    Mesh g = formCoord2D(3, 3, 3.0, 3.0);
+    double dM = 0;
+    for (int n = 0; n < g.nodes(); ++n)
+      for (int i = 0; i < 2; ++i)
+        dM = std::max(dM, std::abs(a[1].mesh.coord(n, i) - (g.coord(n, i) + a[1].uvw(dof(n, i)))));
+    CHECK(dM == 0.0);
+    CHECK((a[0].mesh.coord - g.coord).cwiseAbs().maxCoeff() == 0.0);  // MPM: the mesh is reset
+  }
+
+  TEST_CASE("doughnut: fem=1 with CPDI points is an InputError") {
+    const Setup* s = findSetup("doughnut");
+    REQUIRE(s != nullptr);
+    Params P = s->params();
+    setDefault(P, "fem", 1);
+    setDefault(P, "mpType", 3);
+    CHECK_THROWS_AS(s->setupGrid(P), InputError);
+  }
+
+  TEST_CASE("reactionOver: vector sum and sum of magnitudes by hand; a bad node is an InputError") {
+    Eigen::VectorXd f(8);
+    f << 3, 4, 1, 1, 0, -2, 7, 7;
+    const Reaction r = reactionOver(f, {0, 2});
+    CHECK(r.sum.isApprox(Vector2d(3, 2)));
+    CHECK(r.magnitudes == doctest::Approx(7.0).epsilon(1e-15));
+    CHECK(reactionOver(f, {}).magnitudes == 0.0);
+    CHECK_THROWS_AS(reactionOver(f, {4}), InputError);
+  }
+}
