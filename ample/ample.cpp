@@ -5,7 +5,7 @@
 //   setupGrid
 //   for each load step lstp = 1..lstps
 //     elemMPinfo (basis at the start of the step), detExtForce (scaled by
-//     lstp/lstps), detFDoFs
+//     lstp/lstps; plus detBodyForce at lstp/lstps if the setup gives b(X, lf)), detFDoFs
 //     Newton-Raphson: while (fErr > tol and NRit < NRitMax) or NRit < 2
 //       linSolve, detMPs, oobf = fext - fint + frct, fErr (eq 35)
 //     updateMPs (the finite element mode, an.fem, moves the mesh with the
@@ -89,7 +89,8 @@ void solve(Analysis& an, RunLog& log, const RunOptions& opt) {
     const int lstp = inc.lstp;
     if (inc.first) startStep(an, lstp, log, opt.quiet);              // progress, setup's hook
     timed(T.elemMPinfo, elemMPinfo, mesh, mpData);                   // basis functions
-    const Eigen::VectorXd fext = timed(T.detExtForce, detExtForce, nDoF, an.g, mpData) * inc.lf1;
+    Eigen::VectorXd fext = timed(T.detExtForce, detExtForce, nDoF, an.g, mpData) * inc.lf1;
+    if (an.bodyForce) fext += timed(T.detExtForce, detBodyForce, nDoF, an.bodyForce, inc.lf1, mpData);
     const std::vector<BC> bc = scaled(mesh.bc, inc.bcScale(an.lstps));  // increments of this step
     const std::vector<int> fd = timed(T.detFDoFs, detFDoFs, mesh, mpData);
     Eigen::VectorXd uvw = Eigen::VectorXd::Zero(nDoF), frct = uvw, oobf = fext, fib = uvw;

@@ -25,6 +25,10 @@ struct Analysis {
   std::vector<MaterialPoint> mpData;  // material points
   int lstps = 1;                      // number of load steps
   double g = 0;                       // gravitational acceleration (m/s2), acting in -y
+  // optional body force b(X, lf) per unit reference volume (N/m3) at a point's original
+  // position X and load factor lf; the full force at lf, not scaled by the main loop
+  // (detExtForce.h). Empty: none (the results of every other setup stay bit for bit)
+  std::function<Vector2d(const Vector2d& X, double lf)> bodyForce;
   double tol = 1e-9;                  // Newton-Raphson tolerance on fErr (eq 35)
   int NRitMax = 10;                   // most Newton-Raphson passes per load step
   int substeps = 0;                   // halvings of a failed load step allowed (0: none)

@@ -17,4 +17,15 @@ Eigen::VectorXd detExtForce(int nDoF, double g, const std::vector<MaterialPoint>
   return fext;
 }
 
+Eigen::VectorXd detBodyForce(int nDoF, const std::function<Vector2d(const Vector2d&, double)>& b,
+                             double lf, const std::vector<MaterialPoint>& mpData) {
+  Eigen::VectorXd fext = Eigen::VectorXd::Zero(nDoF);
+  for (const MaterialPoint& mp : mpData) {
+    const Vector2d fp = b(mp.X0, lf) * mp.vp0;  // nominal body force times original volume
+    for (int v = 0; v < mp.nn; ++v)
+      for (int i = 0; i < nD; ++i) fext(dof(mp.nIN[v], i)) += mp.Svp[v] * fp(i);
+  }
+  return fext;
+}
+
 }  // namespace ample
