@@ -24,6 +24,7 @@ namespace deepbeam   { Params params(); Analysis setupGrid(const Params&); Resul
 namespace ibshear    { Params params(); Analysis setupGrid(const Params&); Results results(const Analysis&, const Params&); }
 namespace ibcantilever { Params params(); Analysis setupGrid(const Params&); Results results(const Analysis&, const Params&); }
 namespace funnel     { Params params(); Analysis setupGrid(const Params&); Results results(const Analysis&, const Params&); }
+namespace annulus    { Params params(); Analysis setupGrid(const Params&); Results results(const Analysis&, const Params&); }
 namespace doughnut   { Params params(); Analysis setupGrid(const Params&); Results results(const Analysis&, const Params&); }
 namespace footing    { Params params(); Analysis setupGrid(const Params&); Results results(const Analysis&, const Params&); }
 
@@ -49,6 +50,8 @@ const std::vector<Setup>& setupsTable() {
        ibcantilever::params, ibcantilever::setupGrid, ibcantilever::results},
       {"footing", "rough rigid footing pushed 1 m into an elastic domain by an implicit boundary (seed 003 sec 5.5)",
        footing::params, footing::setupGrid, footing::results},
+      {"annulus", "elastic annulus twisted by a manufactured body force on triangles (seed 000 sec 7.4)",
+       annulus::params, annulus::setupGrid, annulus::results},
       {"funnel", "elastic body forced through a curved funnel of implicit rollers (seed 003 sec 5.6)",
        funnel::params, funnel::setupGrid, funnel::results},
       {"doughnut", "twist of a confined annulus on an annular quad mesh: MPM, CPDI1, CPDI2, FE mode (seed 001 sec 3.2)",
