@@ -10,8 +10,8 @@
 // along alternating diagonals. Points: mpTri per triangle, n = k^2: the
 // triangle cut into k^2 similar ones (k per edge), one point at each centroid;
 // n = 2 k^2: each of those cut again in two from the midpoint of its longest
-// edge. Volume = area / n. Standard MPM (mpType 1) or CPDI1 (mpType 3,
-// domain vectors of a square of the same area). Body force: the exact one
+// edge. Volume = area / n. Standard MPM only (mpType 1: CPDI's square
+// domains of the points next to the circles would stick out of the mesh). Body force: the exact one
 // of the motion with alpha lf at load factor lf (bfLinear=1: lf times the
 // full one). Error (our reading of the paper's "absolute displacement error",
 // after eq 42): sum_p |u_p - u_a(X_p)| V0_p / V0 (m).
@@ -83,6 +83,25 @@ static void triPoints(const Vector2d& a, const Vector2d& b, const Vector2d& c, i
   }
 }
 
+// ns sectors by nr rings between Ri and Ro, each quad cut in two along alternating
+// diagonals, anticlockwise: node j ns + i at radius Ri + (Ro - Ri) j / nr, angle 2 pi i / ns
+static void ringMesh(int ns, int nr, Eigen::MatrixX2d& coord, Eigen::MatrixXi& etpl) {
+  coord.resize((nr + 1) * ns, 2);
+  for (int j = 0; j <= nr; ++j)
+    for (int i = 0; i < ns; ++i) {
+      const double r = Ri + (Ro - Ri) * j / nr, a = 2 * M_PI * i / ns;
+      coord.row(j * ns + i) << r * std::cos(a), r * std::sin(a);
+    }
+  etpl.resize(2 * nr * ns, 3);
+  int e = 0;
+  for (int j = 0; j < nr; ++j)
+    for (int i = 0; i < ns; ++i) {
+      const int n0 = j * ns + i, n1 = j * ns + (i + 1) % ns, n2 = n1 + ns, n3 = n0 + ns;
+      if ((i + j) % 2) { etpl.row(e++) << n0, n3, n2; etpl.row(e++) << n0, n2, n1; }
+      else { etpl.row(e++) << n0, n3, n1; etpl.row(e++) << n3, n2, n1; }
+    }
+}
+
 Analysis setupGrid(const Params& P) {
   Analysis an = baseAnalysis(P);
   const int ns = int(std::lround(2 * M_PI * Ro / get(P, "h")));
@@ -92,20 +111,9 @@ Analysis setupGrid(const Params& P) {
   const bool halve = k * k != n;
   if (halve) k = kh;
   if (k * k * (halve ? 2 : 1) != n) throw InputError("mpTri=" + std::to_string(n) + ": must be k^2 or 2 k^2");
-  Eigen::MatrixX2d coord((nr + 1) * ns, 2);
-  for (int j = 0; j <= nr; ++j)
-    for (int i = 0; i < ns; ++i) {
-      const double r = Ri + (Ro - Ri) * j / nr, a = 2 * M_PI * i / ns;
-      coord.row(j * ns + i) << r * std::cos(a), r * std::sin(a);
-    }
-  Eigen::MatrixXi etpl(2 * nr * ns, 3);
-  int e = 0;
-  for (int j = 0; j < nr; ++j)
-    for (int i = 0; i < ns; ++i) {
-      const int n0 = j * ns + i, n1 = j * ns + (i + 1) % ns, n2 = n1 + ns, n3 = n0 + ns;
-      if ((i + j) % 2) { etpl.row(e++) << n0, n3, n2; etpl.row(e++) << n0, n2, n1; }
-      else { etpl.row(e++) << n0, n3, n1; etpl.row(e++) << n3, n2, n1; }
-    }
+  Eigen::MatrixX2d coord;
+  Eigen::MatrixXi etpl;
+  ringMesh(ns, nr, coord, etpl);
   an.mesh = generalMesh(coord, etpl);
   for (int i = 0; i < 2; ++i)
     fixDofs(an.mesh, i, [](double X, double Y) {
@@ -113,8 +121,10 @@ Analysis setupGrid(const Params& P) {
       return std::abs(R - Ri) < 1e-9 || std::abs(R - Ro) < 1e-9;
     });
   const MpType type = MpType(int(get(P, "mpType")));
-  if (type != MpType::MPM && type != MpType::CPDI1)
-    throw InputError("mpType=" + std::to_string(int(type)) + ": annulus runs 1 (MPM) or 3 (CPDI1)");
+  if (type != MpType::MPM)  // a square domain of a point's area pokes out of the mesh at
+    throw InputError("mpType=" + std::to_string(int(type)) +  // the circles (docs/annulus.md)
+                     ": the annulus runs standard MPM only (mpType=1): CPDI's square domains "
+                     "of the points next to the fixed circles stick out of the triangle mesh");
   for (int c = 0; c < an.mesh.nels(); ++c) {
     std::vector<std::array<Vector2d, 3>> tris;
     const Vector2d a = coord.row(etpl(c, 0)), b = coord.row(etpl(c, 1)), d = coord.row(etpl(c, 2));
@@ -126,12 +136,6 @@ Analysis setupGrid(const Params& P) {
       mp.mpC = mp.X0 = (t[0] + t[1] + t[2]) / 3;
       mp.vp = mp.vp0 = 0.5 * std::abs((t[1] - t[0]).x() * (t[2] - t[0]).y() - (t[1] - t[0]).y() * (t[2] - t[0]).x());
       mp.mCst << get(P, "E"), get(P, "nu"), get(P, "rhoY");
-      if (type == MpType::CPDI1) {  // a square of the point's area
-        const double l = 0.5 * std::sqrt(mp.vp0);
-        mp.lp = mp.lp0 = Vector2d(l, l);
-        mp.st0 << l, 0, 0, l;
-        mp.st = mp.st0;
-      }
       an.mpData.push_back(mp);
     }
   }
