@@ -14,8 +14,10 @@ namespace {
 using Mat38 = Eigen::Matrix<double, 3, 8>;
 
 // n-point Gauss-Legendre rule on [0, 1] (Newton on the Legendre polynomial)
-void gaussRule(int n, std::vector<double>& x, std::vector<double>& w) {
-  x.assign(n, 0.0), w.assign(n, 0.0);
+struct GaussRule { std::vector<double> x, w; };
+GaussRule gaussRule(int n) {
+  GaussRule g{std::vector<double>(n, 0.0), std::vector<double>(n, 0.0)};
+  std::vector<double>&x = g.x, &w = g.w;
   for (int i = 0; i < n; ++i) {
     double z = std::cos(M_PI * (i + 0.75) / (n + 0.5)), dp = 1.0;
     for (int it = 0; it < 100; ++it) {
@@ -33,6 +35,7 @@ void gaussRule(int n, std::vector<double>& x, std::vector<double>& w) {
     x[i] = 0.5 * (1.0 - z);                                      // mapped to [0, 1]
     w[i] = 1.0 / ((1.0 - z * z) * dp * dp);
   }
+  return g;
 }
 
 // strain [G_xx, G_yy, G_xy + G_yx] of the tensor G = v (x) g
@@ -57,8 +60,8 @@ Eigen::Matrix<double, 8, 8> ibCellStiffness(const Mesh& mesh, const Boundary& b,
   const double len = (b.x[c.seg + 1] - b.x[c.seg]).norm() * (c.r1 - c.r0);
   const Vector2d x0 = mesh.coord.row(mesh.etpl(c.cell, 0)).transpose();
   const double ca[4][2] = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};       // local corners (formCoord2D)
-  std::vector<double> gx, gw;
-  gaussRule(10, gx, gw);                                          // sec 4: 10 points along t
+  static const GaussRule rule = gaussRule(10);                   // sec 4: 10 points along t, once
+  const std::vector<double>&gx = rule.x, &gw = rule.w;
   Eigen::Matrix<double, 8, 8> K = Eigen::Matrix<double, 8, 8>::Zero();
   for (size_t q = 0; q < gx.size(); ++q) {
     const double r = c.r0 + gx[q] * (c.r1 - c.r0);
