@@ -77,6 +77,7 @@ static void meshMPMbasis(const Mesh& mesh, MaterialPoint& mp) {
 void MPMbasis(const Mesh& mesh, MaterialPoint& mp) {
   if (!mesh.regular()) return isCPDI(mp) ? cpdiMeshBasis(mesh, mp) : meshMPMbasis(mesh, mp);
   if (isCPDI(mp)) return cpdiBasis(mesh, mp);
+  // BEGIN EXERCISE MPMbasis
   for (int v = 0; v < mp.nn; ++v) {
     Basis1D b[nD];
     for (int i = 0; i < nD; ++i) {
@@ -87,6 +88,7 @@ void MPMbasis(const Mesh& mesh, MaterialPoint& mp) {
     mp.dSvp(0, v) = b[0].dS * b[1].S;
     mp.dSvp(1, v) = b[0].S * b[1].dS;
   }
+  // END EXERCISE
 }
 
 }  // namespace ample

@@ -4,6 +4,7 @@
 // Seed 001 sec 2 (iv). See SvpCPDI.h for the formulas, inputs and outputs.
 //--------------------------------------------------------------------------
 #include "SvpCPDI.h"
+#include "exercise.h"
 #include <cmath>
 
 namespace ample {
@@ -17,6 +18,7 @@ Basis2D SvpCPDI1(const Eigen::Vector4d& Sc, const Eigen::Matrix2d& st) {
 }
 
 Eigen::Vector4d cpdi2Weights(const Corners& x) {
+  // BEGIN EXERCISE SvpCPDI2
   const double xi[4] = {-1, 1, 1, -1}, eta[4] = {-1, -1, 1, 1};
   auto detJ = [&](double r, double s) {  // det of the isoparametric Jacobian at (r, s)
     Eigen::Matrix2d J = Eigen::Matrix2d::Zero();
@@ -31,6 +33,7 @@ Eigen::Vector4d cpdi2Weights(const Corners& x) {
   Eigen::Vector4d w;
   for (int c = 0; c < 4; ++c) w(c) = 0.25 + (J1 * xi[c] + J2 * eta[c]) / (12.0 * J0);
   return w;
+  // END EXERCISE
 }
 
 Basis2D SvpCPDI2(const Eigen::Vector4d& Sc, const Corners& x) {

@@ -4,11 +4,13 @@
 // Seed 002 eqs 25-26. See SvpGIMP.h for the regions, inputs and outputs.
 //--------------------------------------------------------------------------
 #include "SvpGIMP.h"
+#include "exercise.h"
 
 namespace ample {
 
 Basis1D SvpGIMP(double d, double h, double l) {
   if (l <= 0.0) return SvpMPM(d, h);
+  // BEGIN EXERCISE SvpGIMP
   if (-h - l < d && d <= -h + l)  // A
     return {(h + l + d) * (h + l + d) / (4 * h * l), (h + l + d) / (2 * h * l)};
   if (-h + l < d && d <= -l)      // B
@@ -20,6 +22,7 @@ Basis1D SvpGIMP(double d, double h, double l) {
   if (h - l < d && d <= h + l)    // E
     return {(h + l - d) * (h + l - d) / (4 * h * l), -(h + l - d) / (2 * h * l)};
   return {0.0, 0.0};
+  // END EXERCISE
 }
 
 }  // namespace ample

@@ -4,6 +4,7 @@
 // Seed 002 eqs 23-24. See SvpMPM.h for inputs and outputs.
 //--------------------------------------------------------------------------
 #include "SvpMPM.h"
+#include "exercise.h"
 
 namespace ample {
 
@@ -12,11 +13,13 @@ namespace ample {
 // elemForMP uses the same t, so the point's cell and the branch of each node's
 // gradient agree). The value S is continuous and is left as eq 23 gives it.
 Basis1D SvpMPM(double d, double h) {
+  // BEGIN EXERCISE SvpMPM
   const double S = (-h < d && d <= 0.0) ? 1.0 + d / h : (0.0 < d && d <= h) ? 1.0 - d / h : 0.0;
   const double t = 1e-9 * h;
   if (-h + t < d && d <= t) return {S, 1.0 / h};
   if (t < d && d <= h + t) return {S, -1.0 / h};
   return {S, 0.0};
+  // END EXERCISE
 }
 
 }  // namespace ample

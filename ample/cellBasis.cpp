@@ -19,6 +19,7 @@ constexpr double snap = 1e-14;  // the Newton tolerance: closer than this to an 
 double onEdge(double v, double at) { return std::abs(v - at) <= snap ? at : v; }
 
 CellBasis triangleBasis(const Corners4& X, const Vector2d& x) {  // X: corners about node 0
+  // BEGIN EXERCISE cellBasis
   const Vector2d a = X.col(1), b = X.col(2);
   const double A2 = a(0) * b(1) - a(1) * b(0);
   CellBasis c;
@@ -34,6 +35,7 @@ CellBasis triangleBasis(const Corners4& X, const Vector2d& x) {  // X: corners a
   }
   c.xi = Vector2d(c.N[1], c.N[2]);
   return c;
+  // END EXERCISE
 }
 
 // dN_a/dxi (row 0) and dN_a/deta (row 1), and N_a, at xi

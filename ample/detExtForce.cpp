@@ -4,10 +4,12 @@
 // Seed 002 eqs 27-28. See detExtForce.h for inputs and outputs.
 //--------------------------------------------------------------------------
 #include "detExtForce.h"
+#include "exercise.h"
 
 namespace ample {
 
 Eigen::VectorXd detExtForce(int nDoF, double g, const std::vector<MaterialPoint>& mpData) {
+  // BEGIN EXERCISE detExtForce
   Eigen::VectorXd fext = Eigen::VectorXd::Zero(nDoF);
   for (const MaterialPoint& mp : mpData) {
     const Vector2d fp = mp.mpM * Vector2d(0.0, -g) + mp.fp;  // body (eq 27) + point (eq 28)
@@ -15,6 +17,7 @@ Eigen::VectorXd detExtForce(int nDoF, double g, const std::vector<MaterialPoint>
       for (int i = 0; i < nD; ++i) fext(dof(mp.nIN[v], i)) += mp.Svp[v] * fp(i);
   }
   return fext;
+  // END EXERCISE
 }
 
 Eigen::VectorXd detBodyForce(int nDoF, const std::function<Vector2d(const Vector2d&, double)>& b,

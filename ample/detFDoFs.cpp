@@ -6,6 +6,7 @@
 #include "detFDoFs.h"
 #include "MPMbasis.h"
 #include "domainCorners.h"
+#include "exercise.h"
 #include <cmath>
 
 namespace ample {
@@ -41,13 +42,15 @@ static int singleCorner(const Mesh& mesh, const Corners& x, int node) {
 
 std::vector<int> detFDoFs(const Mesh& mesh, const std::vector<MaterialPoint>& mpData) {
   std::vector<int> links(mesh.nodes(), 0);  // points linked to each node
+  std::vector<char> isFree(mesh.nDoF(), 0); // 1: the dof is solved for
+  // BEGIN EXERCISE detFDoFs
   for (const MaterialPoint& mp : mpData)
     for (int v = 0; v < mp.nn; ++v) links[mp.nIN[v]]++;
-  std::vector<char> isFree(mesh.nDoF(), 0);
   for (int n = 0; n < mesh.nodes(); ++n)
     if (links[n] > 0)
       for (int i = 0; i < nD; ++i) isFree[dof(n, i)] = 1;
   for (const BC& c : mesh.bc) isFree[c.dof] = 0;
+  // END EXERCISE
 
   for (const MaterialPoint& mp : mpData) {  // nodes only one CPDI corner reaches
     if (!isCPDI(mp)) continue;

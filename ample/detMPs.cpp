@@ -7,6 +7,7 @@
 #include "detMPs.h"
 #include "constitutive/Hooke3d.h"
 #include "constitutive/VMconst.h"
+#include "exercise.h"
 #include "formPCstiff.h"
 #include "formULstiff.h"
 #include "stiffnessPattern.h"
@@ -116,6 +117,7 @@ DetMPsOut detMPs(const Eigen::VectorXd& uvw, std::vector<MaterialPoint>& mpData,
       for (int i = 0; i < nD; ++i) d[nD * a + i] = dof(mp.nIN[a], i);
     const int ne = nD * mp.nn;
     Eigen::Matrix<double, nD * MAXN, nD * MAXN> ke;               // eq 14
+    // BEGIN EXERCISE detMPs
     for (int a = 0; a < mp.nn; ++a)
       for (int i = 0; i < nD; ++i) {
         double fa = 0.0;                                          // eq 16
@@ -129,6 +131,7 @@ DetMPsOut detMPs(const Eigen::VectorXd& uvw, std::vector<MaterialPoint>& mpData,
             ke(nD * a + i, nD * b + k) = kab * t.Vp;
           }
       }
+    // END EXERCISE
     addToPattern(out.Kt, d, ne, ke.topLeftCorner(ne, ne));      // eq 30
   }
   return out;

@@ -4,22 +4,27 @@
 // See dirichletBand.h for inputs and outputs.
 //--------------------------------------------------------------------------
 #include "dirichletBand.h"
+#include "exercise.h"
 #include <cassert>
 
 namespace ample {
 
 double dirichletD(double phi, double delta) {
   assert(delta > 0 && "dirichletD: the band width delta must be positive");
+  // BEGIN EXERCISE dirichletBand
   if (phi < 0) return 0.0;      // outside the solid
   if (phi > delta) return 1.0;  // inside, beyond the band
   const double r = 1.0 - phi / delta;
   return 1.0 - r * r;           // eq 16
+  // END EXERCISE
 }
 
 double dirichletDPrime(double phi, double delta) {
   assert(delta > 0 && "dirichletDPrime: the band width delta must be positive");
+  // BEGIN EXERCISE dirichletBand
   if (phi < 0 || phi > delta) return 0.0;
   return 2.0 / delta * (1.0 - phi / delta);  // d/dphi of eq 16
+  // END EXERCISE
 }
 
 Vector2d dirichletGrad(double phi, double delta, const Vector2d& n) {

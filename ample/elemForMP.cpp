@@ -29,6 +29,7 @@ static int gridCells(const Mesh& mesh, const Vector2d& mpC, const Vector2d& lp,
           << mesh.origin(1) << ", " << mesh.origin(1) + mesh.nelsy * mesh.h(1) << "]";
       throw RunError(msg.str());
     }
+    // BEGIN EXERCISE elemForMP
     if (lp(i) > 0.0) {
       first[i] = int(std::floor(lo + tol));
       last[i] = std::max(first[i], int(std::ceil(hi - tol)) - 1);
@@ -41,6 +42,7 @@ static int gridCells(const Mesh& mesh, const Vector2d& mpC, const Vector2d& lp,
       else if (k < nels[i] - 1 && mpC(i) > mesh.coord((k + 1) * stride, i) + t) k++;
       first[i] = last[i] = k;
     }
+    // END EXERCISE
     first[i] = std::clamp(first[i], 0, nels[i] - 1);  // a domain reaching past the grid
     last[i] = std::clamp(last[i], 0, nels[i] - 1);    // edge is cut there, as in the paper
   }

@@ -6,8 +6,10 @@
 // RunError: the analysis cannot go on (a load step did not converge, a point
 //   left the grid, the stiffness is singular); the program exits with status 1
 //   and keeps the output of the last converged load step.
+// ExerciseNotDone (exercise.h): a blanked region of the student copy was reached.
 //--------------------------------------------------------------------------
 #pragma once
+#include "exercise.h"  // ExerciseNotDone: a blanked exercise of the student copy
 #include <stdexcept>
 #include <string>
 

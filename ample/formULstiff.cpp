@@ -4,6 +4,7 @@
 // Seed 000 eqs A.1-A.2. See formULstiff.h for inputs and outputs.
 //--------------------------------------------------------------------------
 #include "formULstiff.h"
+#include "exercise.h"
 #include <Eigen/Eigenvalues>
 #include <cmath>
 
@@ -39,6 +40,7 @@ Matrix9d dLogdB(const Eigen::SelfAdjointEigenSolver<Matrix3d>& es) {
 
 Matrix9d formULstiff(const Matrix3d& F, const Matrix6d& D, const Vector6d& sig,
                      const Matrix3d& BeT) {
+  // BEGIN EXERCISE formULstiff
   Matrix9d D9, B9, S9 = Matrix9d::Zero();
   for (int i = 0; i < 3; ++i)
     for (int j = 0; j < 3; ++j)
@@ -50,6 +52,7 @@ Matrix9d formULstiff(const Matrix3d& F, const Matrix6d& D, const Vector6d& sig,
         }
   const double J = F.determinant();
   return (0.5 / J) * (D9.lazyProduct(dLogdB(BeT))).lazyProduct(B9) - S9;
+  // END EXERCISE
 }
 
 Matrix4d dLogdB2D(const Matrix3d& b) {
@@ -76,6 +79,7 @@ Matrix4d elasticBlock2D(const Matrix6d& D) {
 
 Matrix4d formULstiff2D(const Matrix3d& F, const Matrix6d& D, const Vector6d& sig,
                        const Matrix3d& BeT) {
+  // BEGIN EXERCISE formULstiff
   const Matrix4d L = dLogdB2D(BeT);               // in-plane block of d ln(b)/db
   const Matrix4d D4 = elasticBlock2D(D);
   Matrix4d B4, S4 = Matrix4d::Zero();
@@ -87,6 +91,7 @@ Matrix4d formULstiff2D(const Matrix3d& F, const Matrix6d& D, const Vector6d& sig
           if (j == k) S4(2 * i + j, 2 * k + l) = sig(voigt[i][l]);
         }
   return (0.5 / F.determinant()) * D4 * L * B4 - S4;
+  // END EXERCISE
 }
 
 }  // namespace ample

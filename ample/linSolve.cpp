@@ -10,6 +10,7 @@ namespace ample {
 
 LinSolveOut linSolve(const std::vector<BC>& bc, const SpMat& Kt, const Eigen::VectorXd& oobf,
                      int NRit, const std::vector<int>& fd, FreeSystem* cache) {
+  // BEGIN EXERCISE linSolve
   const int nDoF = int(oobf.size()), nfd = int(fd.size());
   LinSolveOut out{Eigen::VectorXd::Zero(nDoF), Eigen::VectorXd::Zero(nDoF)};
   if (NRit == 0) return out;  // first pass only builds Kt and fint
@@ -44,6 +45,7 @@ LinSolveOut linSolve(const std::vector<BC>& bc, const SpMat& Kt, const Eigen::Ve
   const Eigen::VectorXd Ku = Kt * out.duvw;
   for (const BC& c : bc) out.drct(c.dof) = Ku(c.dof) - oobf(c.dof);
   return out;
+  // END EXERCISE
 }
 
 }  // namespace ample

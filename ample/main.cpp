@@ -6,7 +6,8 @@
 //   ample compaction nelsy=128 mpType=1 --vtk 0
 //   ample collapse a=2 mp=3 --out results/collapse_h1
 // Exit status: 0 converged, 1 a load step did not converge or the run could
-// not go on, 2 bad input.
+// not go on, 2 bad input, 3 the student copy reached an exercise not done
+// (one line "ample: needs exercise X: see docs/exercises.md#X").
 //--------------------------------------------------------------------------
 #include "cli.h"
 #include "errors.h"
@@ -29,6 +30,9 @@ int main(int argc, char** argv) {
   }
   try {
     return ample::ample(*req.setup, req.params, req.options);
+  } catch (const ExerciseNotDone& e) {  // the student copy (docs/exercises.md)
+    std::cerr << "ample: needs exercise " << e.what() << "\n";
+    return 3;
   } catch (const InputError& e) {      // the setup's problem is inconsistent
     std::cerr << "ample: " << e.what() << "\n";
     return 2;

@@ -4,12 +4,14 @@
 // Seed 002 eqs 15, 33, 34. See updateMPs.h for inputs and outputs.
 //--------------------------------------------------------------------------
 #include "updateMPs.h"
+#include "exercise.h"
 #include "updateDomain.h"
 
 namespace ample {
 
 void updateMPs(const Mesh& mesh, const Eigen::VectorXd& uvw, DomainUpdate method,
                std::vector<MaterialPoint>& mpData) {
+  // BEGIN EXERCISE updateMPs
   for (MaterialPoint& mp : mpData) {
     Vector2d du = Vector2d::Zero();                      // eq 33
     for (int v = 0; v < mp.nn; ++v)
@@ -21,6 +23,7 @@ void updateMPs(const Mesh& mesh, const Eigen::VectorXd& uvw, DomainUpdate method
     mp.Fn = mp.F;
     mp.epsEn = mp.epsE;
   }
+  // END EXERCISE
 }
 
 void moveMesh(Mesh& mesh, const Eigen::VectorXd& uvw) {

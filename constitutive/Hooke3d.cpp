@@ -4,10 +4,12 @@
 // Seed 002 eq 5. See Hooke3d.h for inputs and outputs.
 //--------------------------------------------------------------------------
 #include "Hooke3d.h"
+#include "ample/exercise.h"
 
 namespace ample {
 
 Matrix6d elasticStiffness(double E, double nu) {
+  // BEGIN EXERCISE Hooke3d
   const double c = E / ((1.0 + nu) * (1.0 - 2.0 * nu));
   Matrix6d D = Matrix6d::Zero();
   D.topLeftCorner<3, 3>().setConstant(c * nu);
@@ -16,14 +18,17 @@ Matrix6d elasticStiffness(double E, double nu) {
     D(i + 3, i + 3) = E / (2.0 * (1.0 + nu));  // shear modulus G on engineering shear
   }
   return D;
+  // END EXERCISE
 }
 
 ConstOut Hooke3d(const Vector6d& epsEtr, const Vector3d& mCst) {
+  // BEGIN EXERCISE Hooke3d
   ConstOut out;
   out.D = elasticStiffness(mCst(0), mCst(1));
   out.Ksig = out.D * epsEtr;
   out.epsE = epsEtr;
   return out;
+  // END EXERCISE
 }
 
 }  // namespace ample

@@ -4,11 +4,13 @@
 // Seed 002 eq 11. See VMconst.h for the algorithm, inputs and outputs.
 //--------------------------------------------------------------------------
 #include "VMconst.h"
+#include "ample/exercise.h"
 #include <cmath>
 
 namespace ample {
 
 ConstOut VMconst(const Vector6d& epsEtr, const Vector3d& mCst) {
+  // BEGIN EXERCISE VMconst
   const double E = mCst(0), nu = mCst(1), rhoY = mCst(2);
   ConstOut out = Hooke3d(epsEtr, mCst);                 // elastic predictor
   Vector6d m;
@@ -31,6 +33,7 @@ ConstOut VMconst(const Vector6d& epsEtr, const Vector3d& mCst) {
   Idev.bottomRightCorner<3, 3>() = 0.5 * Eigen::Matrix3d::Identity();
   out.D = K * m * m.transpose() + 2.0 * G * theta * (Idev - n * n.transpose());
   return out;
+  // END EXERCISE
 }
 
 }  // namespace ample

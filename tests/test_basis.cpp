@@ -109,22 +109,34 @@ TEST_SUITE("SvpGIMP") {
       }
     }
   }
-  TEST_CASE("SvpGIMP: gradient equals central differences in each region A-E") {
-    // regions: A A B C C D E E, all at least 0.05 away from a region boundary
-    for (double d : {-0.55, -0.45, -0.3, -0.05, 0.07, 0.3, 0.45, 0.55}) {
-      CAPTURE(d);
+  TEST_CASE("SvpGIMP: gradient equals central differences and hand values in each region A-E") {
+    // regions: A A B C C D E E, all at least 0.05 away from a region boundary; the hand
+    // values of eq 26 (h = 0.5, lp = 0.1, 2 h lp = 0.1): A (h+l+d)/0.1 = 0.5, 1.5; B 1/h = 2;
+    // C -d/(h l) = 1, -1.4; D -2; E -(h+l-d)/0.1 = -1.5, -0.5
+    const double d[8] = {-0.55, -0.45, -0.3, -0.05, 0.07, 0.3, 0.45, 0.55};
+    const double dS[8] = {0.5, 1.5, 2.0, 1.0, -1.4, -2.0, -1.5, -0.5};
+    for (int k = 0; k < 8; ++k) {
+      CAPTURE(d[k]);
       const double e = 1e-6;
-      const double fd = (SvpGIMP(d + e, h, lp).S - SvpGIMP(d - e, h, lp).S) / (2 * e);
-      CHECK(std::abs(SvpGIMP(d, h, lp).dS - fd) <= 1e-6);
+      const double fd = (SvpGIMP(d[k] + e, h, lp).S - SvpGIMP(d[k] - e, h, lp).S) / (2 * e);
+      CHECK(std::abs(SvpGIMP(d[k], h, lp).dS - fd) <= 1e-6);
+      CHECK(std::abs(SvpGIMP(d[k], h, lp).dS - dS[k]) <= 1e-12);
+      CHECK(std::abs(fd - dS[k]) <= 1e-6);  // the value S itself has this slope
     }
   }
-  TEST_CASE("SvpGIMP: value and gradient continuous across the region boundaries") {
-    // A|B, B|C, C|D, D|E, and the outer ends of A and E (where S and dS reach 0)
-    for (double b : {-h + lp, -lp, lp, h - lp, -h - lp, h + lp}) {
-      CAPTURE(b);
-      const Basis1D lo = SvpGIMP(b - 1e-9, h, lp), hi = SvpGIMP(b + 1e-9, h, lp);
+  TEST_CASE("SvpGIMP: value and gradient continuous across the region boundaries, with their hand values") {
+    // A|B, B|C, C|D, D|E, and the outer ends of A and E (where S and dS reach 0); at
+    // d = -h+l: S = (2l)^2/(4hl) = l/h = 0.2, dS = 2l/(2hl) = 1/h = 2; at d = -l: S = 1 - l/h = 0.8,
+    // dS = l/(hl) = 2 (mirrored for d > 0)
+    const double b[6] = {-h + lp, -lp, lp, h - lp, -h - lp, h + lp};
+    const double S[6] = {0.2, 0.8, 0.8, 0.2, 0.0, 0.0}, dS[6] = {2.0, 2.0, -2.0, -2.0, 0.0, 0.0};
+    for (int k = 0; k < 6; ++k) {
+      CAPTURE(b[k]);
+      const Basis1D lo = SvpGIMP(b[k] - 1e-9, h, lp), hi = SvpGIMP(b[k] + 1e-9, h, lp);
       CHECK(std::abs(lo.S - hi.S) <= 1e-7);
       CHECK(std::abs(lo.dS - hi.dS) <= 1e-7);
+      CHECK(std::abs(lo.S - S[k]) <= 1e-7);
+      CHECK(std::abs(lo.dS - dS[k]) <= 1e-7);
     }
   }
   TEST_CASE("SvpGIMP: equals standard MPM when the domain lies inside one cell") {

@@ -45,6 +45,10 @@ Vector6d plasticStrain() {
   eps << 0.09, -0.06, 0.03, 0.045, -0.03, 0.06;
   return eps;
 }
+// its return factor theta = rho_y / rho_tr by hand: mean strain 0.02, deviator (tensor
+// shears = half the engineering ones) [0.07 -0.08 0.01 | 0.0225 -0.015 0.03], |e|^2 =
+// 0.0114 + 2 * 0.00163125 = 0.0146625, rho_tr = 2G |e| = 93145.23875624873 Pa
+const double rhoTrial = 93145.23875624873, thetaHand = rhoY / rhoTrial;
 }  // namespace
 
 TEST_SUITE("Hooke3d") {
@@ -85,6 +89,9 @@ TEST_SUITE("VMconst") {
     CHECK((o.Ksig - e.D * eps).norm() <= 1e-14 * e.Ksig.norm());
     CHECK((o.D - handD()).norm() <= 1e-12 * handD().norm());
     CHECK(o.epsE == eps);
+    // just outside (rho_tr = 1.01 rho_y) the trial state does not stand: it is returned
+    const ConstOut out = VMconst(plasticStrain() * (1.01 * rhoY / rhoTrial), mCst);
+    CHECK(std::abs(rhoOf(out.Ksig) - rhoY) <= 1e-10 * rhoY);
   }
   TEST_CASE("VMconst: a trial state far outside returns onto the surface radially") {
     const Vector6d eps = plasticStrain();
@@ -95,9 +102,14 @@ TEST_SUITE("VMconst") {
     const Vector6d sT = devOf(e.Ksig), s = devOf(o.Ksig);  // same deviatoric direction
     CHECK((s / s.norm() - sT / sT.norm()).norm() <= 1e-13);
   }
-  TEST_CASE("VMconst: the returned elastic strain gives the returned stress / D epsE = tau") {
-    const ConstOut o = VMconst(plasticStrain(), mCst);
+  TEST_CASE("VMconst: the returned elastic strain gives the returned stress / D epsE = tau / theta by hand") {
+    const Vector6d eps = plasticStrain();
+    const ConstOut o = VMconst(eps, mCst);
     CHECK((handD() * o.epsE - o.Ksig).norm() <= 1e-10 * o.Ksig.norm());
+    // the volumetric strain is kept, the deviatoric one scaled by theta = rho_y / rho_tr
+    const Vector6d eVol = 0.02 * m1();
+    CHECK((o.epsE - (eVol + thetaHand * (eps - eVol))).norm() <= 1e-12 * eps.norm());
+    CHECK(std::abs(rhoOf(o.Ksig) - thetaHand * rhoTrial) <= 1e-10 * rhoY);
   }
   TEST_CASE("VMconst: algorithmic tangent equals central differences of the return map") {
     const Vector6d eps = plasticStrain();
@@ -112,6 +124,12 @@ TEST_SUITE("VMconst") {
     }
     CHECK((D - Dfd).norm() <= 1e-6 * D.norm());
     CHECK((D - D.transpose()).norm() <= 1e-12 * D.norm());  // associated flow: symmetric
+    // a strain increment along the trial deviator changes no deviatoric stress (the return
+    // is radial): the deviatoric part of Dfd u is zero, where the elastic one is 2G u
+    Vector6d u = devOf(eps);
+    u /= u.norm();
+    CHECK(rhoOf(Dfd * u) <= 1e-6 * 2 * G);
+    CHECK(std::abs(meanOf(Dfd * u)) <= 1e-6 * K);  // u has no volume change
   }
   TEST_CASE("VMconst: on the surface the tangent gives stress increments tangent to it") {
     // perfect plasticity: n : D deps = 0 for every deps, n the unit normal s/|s|

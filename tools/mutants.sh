@@ -77,17 +77,7 @@ while [ $# -gt 0 ]; do
 done
 
 mkdir -p "$WORK/src" "$WORK/build" || exit 2
-# copy the tree: a file is rewritten only when its content differs, so that the
-# build folder sees new times on changed files only (no rsync needed)
-sync_tree() {
-  local from=$1 f
-  (cd "$from" && find . -path ./build -prune -o -name .git -prune -o -type f -print) |
-    while read -r f; do
-      mkdir -p "$WORK/src/$(dirname "$f")"
-      cmp -s "$from/$f" "$WORK/src/$f" || cp "$from/$f" "$WORK/src/$f"
-    done
-}
-sync_tree "$SRC"
+"$SRC/tools/sync_tree.sh" "$SRC" "$WORK/src"   # changed files only: only they recompile
 if [ -n "$TESTS_REV" ]; then        # the test folder of another revision
   tmp=$(mktemp -d)
   git -C "$SRC" archive "$TESTS_REV" tests | tar -x -C "$tmp" || exit 2
