@@ -10,6 +10,7 @@
 #include <doctest/doctest.h>
 #include <Eigen/LU>
 #include <algorithm>
+#include <array>
 
 using namespace ample;
 
@@ -41,6 +42,24 @@ TEST_SUITE("detFDoFs") {
     CHECK(std::adjacent_find(fd.begin(), fd.end()) == fd.end());
     for (int n : {0, 1, 5, 6, 7, 11, 12, 18, 19, 23, 24})
       for (int i = 0; i < nD; ++i) CHECK(std::binary_search(fd.begin(), fd.end(), dof(n, i)));
+  }
+  TEST_CASE("detFDoFs: the dofs of the nodes linked to a point, less the bc dofs, ascending (points linked by hand)") {
+    Mesh mesh = formCoord2D(4, 4, 4.0, 4.0);  // 5 nodes per row, node = 5 row + column
+    std::vector<MaterialPoint> pts(3);
+    const std::array<int, 4> nodes[3] = {{6, 7, 11, 12}, {7, 8, 12, 13}, {18, 19, 23, 24}};
+    for (int p = 0; p < 3; ++p) {      // standard MPM points, each linked to one cell's nodes
+      pts[p].mpType = MpType::MPM;
+      pts[p].nn = 4;
+      for (int v = 0; v < 4; ++v) pts[p].nIN[v] = nodes[p][v];
+    }
+    mesh.bc = {{dof(7, 0), 0.0}, {dof(23, 1), 0.1}, {dof(0, 1), 0.0}};  // node 0 is not linked
+    const std::vector<int> expected = {dof(6, 0),  dof(6, 1),  /* 7x held */ dof(7, 1),
+                                       dof(8, 0),  dof(8, 1),  dof(11, 0), dof(11, 1),
+                                       dof(12, 0), dof(12, 1), dof(13, 0), dof(13, 1),
+                                       dof(18, 0), dof(18, 1), dof(19, 0), dof(19, 1),
+                                       dof(23, 0), /* 23y held */ dof(24, 0), dof(24, 1)};
+    CHECK(detFDoFs(mesh, pts) == expected);
+    CHECK(detFDoFs(mesh, {}) == std::vector<int>{});  // no point: nothing to solve for
   }
 }
 

@@ -13,7 +13,7 @@ using namespace ample;
 
 
 TEST_SUITE("detMPs") {
-  TEST_CASE("detMPs: tangent equals central differences of fint (elastic / plastic / MPM / GIMP)") {
+  TEST_CASE("detMPs: tangent equals central differences of fint (elastic / plastic / MPM / GIMP / UL and PC)") {
     for (MpType t : {MpType::MPM, MpType::GIMP})
       for (CmType c : {CmType::Elastic, CmType::VonMises}) {
         CAPTURE(int(t));
@@ -34,17 +34,26 @@ TEST_SUITE("detMPs") {
           }
         }
         CHECK(testing::tangentError(an, uvw, Formulation::UL) < 1e-6);
+        // PC (seed 000 sec 5): the stress paired with dS/dX~ is P~, not symmetric, so
+        // eq 16 must contract its second index with the gradient
+        CHECK(testing::tangentError(an, uvw, Formulation::PC) < 1e-6);
       }
   }
 
-  TEST_CASE("detMPs: zero increment on an unstressed body gives zero internal force") {
+  TEST_CASE("detMPs: zero increment on an unstressed body gives zero internal force, a small one K du") {
     Analysis an = testing::smallBlock(MpType::GIMP, CmType::Elastic);
     elemMPinfo(an.mesh, an.mpData);
     const DetMPsOut out = detMPs(Eigen::VectorXd::Zero(an.mesh.nDoF()), an.mpData);
     CHECK(out.fint.norm() == 0.0);
+    // a small increment (strains ~1e-6) gives the linear response fint = Kt(0) du to
+    // second order, and that response is not zero
+    const Eigen::VectorXd du = testing::randomUvw(an, 1e-6, 5);
+    const Eigen::VectorXd f = detMPs(du, an.mpData).fint, Kdu = out.Kt * du;
+    CHECK(f.norm() > 0.0);
+    CHECK((f - Kdu).norm() <= 1e-4 * f.norm());
   }
 
-  TEST_CASE("detMPs: homogeneous deformation gives uniform stress and no interior force") {
+  TEST_CASE("detMPs: homogeneous deformation gives uniform stress, no interior force, and the nodal forces' moment det(F) V0 sigma") {
     for (MpType t : {MpType::MPM, MpType::GIMP}) {
       Analysis an = testing::smallBlock(t, CmType::Elastic, 3);
       elemMPinfo(an.mesh, an.mpData);
@@ -63,6 +72,16 @@ TEST_SUITE("detMPs") {
         CHECK((mp.sig - sigA).norm() <= 1e-10 * sigA.norm());
       const int centre = 2 * 5 + 2;  // node (2, 2): interior to the block
       CHECK(out.fint.segment<2>(2 * centre).norm() <= 1e-10 * sigA.norm());
+      // the first moment of the nodal forces about the moved nodes is the stress times the
+      // current volume: sum_a x_a (x) f_a = sum_p V_p sigma = det(F) V0 sigma (eq 16 with
+      // sum_a x_a (x) dS_a/dx = I, V_p = det(F) V_p0 in a homogeneous deformation)
+      Eigen::Matrix2d M = Eigen::Matrix2d::Zero();
+      for (int n = 0; n < an.mesh.nodes(); ++n)
+        M += (an.mesh.coord.row(n).transpose() + uvw.segment<2>(2 * n)) * out.fint.segment<2>(2 * n).transpose();
+      double V0 = 0.0;
+      for (const MaterialPoint& mp : an.mpData) V0 += mp.vp0;
+      const Eigen::Matrix2d sig2 = stressToTensor(sigA).topLeftCorner<2, 2>();
+      CHECK((M - F.determinant() * V0 * sig2).norm() <= 1e-10 * V0 * sig2.norm());
     }
   }
 }

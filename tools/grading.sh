@@ -41,7 +41,11 @@ SELECT=${*:-$EXERCISES}
 mkdir -p "$WORK/src" "$WORK/build" || exit 2
 "$SRC/tools/sync_tree.sh" "$SRC" "$WORK/src"
 build() { cmake --build "$WORK/build" -j2 --target ample_tests >"$WORK/build.log" 2>&1; }
-suite() { (cd "$WORK/build/tests" && timeout 900 ./ample_tests -ts="$1" >"$WORK/tests.log" 2>&1); }
+suite() {  # the suite of exercise $1; $WORK/cases.tsv: status, suite, exercise, case (main_tests.cpp)
+  rm -f "$WORK/cases.tsv"
+  (cd "$WORK/build/tests" &&
+     AMPLE_EXERCISE_LOG=$WORK/cases.tsv timeout 900 ./ample_tests -ts="$1" >"$WORK/tests.log" 2>&1)
+}
 if [ ! -f "$WORK/build/CMakeCache.txt" ]; then
   cmake -S "$WORK/src" -B "$WORK/build" -DCMAKE_BUILD_TYPE=Release -DAMPLE_DISCOVER_TESTS=OFF >"$WORK/configure.log" 2>&1 ||
     { echo "configure failed: $WORK/configure.log"; exit 2; }
@@ -72,9 +76,8 @@ for x in $SELECT; do
       verdict=ACCEPTED status=1
     else
       verdict=rejected rejected=$((rejected + 1))
-      detail=$(grep -o 'TEST CASE:  .*' "$WORK/tests.log" | sed 's/TEST CASE:  //' | sort -u | head -2 | paste -sd ';' -)
-      [ -n "$detail" ] || detail=$(grep -m1 'FAILED: exercise' "$WORK/tests.log" | sed 's/^.*: FAILED/FAILED/')
-      detail="$(grep -o '[0-9]* failed |' "$WORK/tests.log" | head -1 | tr -d '|')cases: $detail"
+      detail="$(awk -F'\t' '$1 != "pass"' "$WORK/cases.tsv" | wc -l) of $(wc -l < "$WORK/cases.tsv") cases fail: "
+      detail+=$(awk -F'\t' '$1 != "pass" {print $4}' "$WORK/cases.tsv" | head -2 | paste -sd ';' -)
     fi
     cp "$WORK/original" "$target"   # restored with a new time: it recompiles next time
     printf '%-14s %-22s %-11s %4ss  %s\n' "$x" "$name" "$verdict" "$(( $(date +%s) - start ))" "$detail"
