@@ -130,6 +130,8 @@ TEST_SUITE("VMconst") {
     u /= u.norm();
     CHECK(rhoOf(Dfd * u) <= 1e-6 * 2 * G);
     CHECK(std::abs(meanOf(Dfd * u)) <= 1e-6 * K);  // u has no volume change
+    // while a volumetric strain gets the elastic bulk response: D m = 3K m
+    CHECK((D * m1() - 3 * K * m1()).norm() <= 1e-9 * 3 * K);
   }
   TEST_CASE("VMconst: on the surface the tangent gives stress increments tangent to it") {
     // perfect plasticity: n : D deps = 0 for every deps, n the unit normal s/|s|

@@ -106,6 +106,11 @@ TEST_SUITE("formULstiff") {
     const Matrix9d A1 = formULstiff(Matrix3d::Identity(), D, Vector6d::Zero(), Matrix3d::Identity());
     const Matrix9d AJ = formULstiff(F, D, Vector6d::Zero(), Matrix3d::Identity());
     CHECK((AJ * 1.08 - A1).norm() <= 1e-12 * A1.norm());
+    // at F = b_e = I, no stress: 1/2 D L B = D (L = I, B = 2 I on symmetric pairs), so
+    // a_xxxx = D(0, 0) = E (1 - nu) / ((1 + nu)(1 - 2 nu)) = 1.2e6 Pa and a_xyxy = G = 4e5 Pa
+    CHECK(std::abs(A1(0, 0) - 1.2e6) <= 1e-6);
+    CHECK(std::abs(A1(1, 1) - 4e5) <= 1e-6);
+    CHECK(std::abs(AJ(0, 0) - 1.2e6 / 1.08) <= 1e-6);
   }
 }
 
@@ -128,5 +133,12 @@ TEST_SUITE("formULstiff") {
     const Matrix9d A9 = formULstiff(F, elasticStiffness(1e6, 0.3), sig, iso);
     CHECK(std::abs(A4(0, 0) - A9(0, 0)) <= 1e-10 * A9.norm());
     CHECK(std::abs(A4(1, 2) - A9(1, 3)) <= 1e-10 * A9.norm());
+    // closed form at F = b_e = I: A4 = D4 - sigma_il delta_jk, e.g. a_xxxx = lambda + 2G - sigma_xx
+    // (E = 1e6, nu = 0.3: 1346153.846153846 Pa), a_xyyx = G - sigma_xx... (i x, j y, k y, l x):
+    // D_xyyx = G = 384615.3846153846, minus sigma_il delta_jk = sigma_xx = 3e3
+    const Eigen::Matrix4d AI = formULstiff2D(Matrix3d::Identity(), elasticStiffness(1e6, 0.3), sig,
+                                             Matrix3d::Identity());
+    CHECK(std::abs(AI(0, 0) - (1346153.846153846 - 3e3)) <= 1e-6);
+    CHECK(std::abs(AI(1, 2) - (384615.3846153846 - 3e3)) <= 1e-6);
   }
 }

@@ -144,6 +144,8 @@ TEST_SUITE("elemForMP") {
   TEST_CASE("elemForMP: a domain reaching past the grid edge keeps the cells inside") {
     const Mesh m = formCoord2D(4, 4, 4.0, 4.0);
     CHECK(cellsOf(m, Vector2d(0.05, 0.05), Vector2d(0.1, 0.1)) == std::vector<int>{0});
+    CHECK(cellsOf(m, Vector2d(3.95, 3.95), Vector2d(0.1, 0.1)) == std::vector<int>{15});
+    CHECK(cellsOf(m, Vector2d(3.95, 1.5), Vector2d(0.1, 0.1)) == std::vector<int>{7});
   }
   TEST_CASE("elemForMP: a point outside the grid throws RunError") {
     const Mesh m = formCoord2D(4, 4, 4.0, 4.0);

@@ -33,6 +33,8 @@ TEST_SUITE("linSolve") {
     REQUIRE(o.drct.size() == 5);
     CHECK(o.duvw.norm() == 0.0);
     CHECK(o.drct.norm() == 0.0);
+    // the same call at NRit = 1 does move: the prescribed 0.5 enters
+    CHECK(linSolve({{0, 0.5}}, chain(), Eigen::VectorXd::Ones(5), 1, {1, 2, 3, 4}).duvw(0) == 0.5);
   }
   TEST_CASE("linSolve: at NRit = 1 the prescribed increment enters / Kff x = rhs / reactions") {
     const SpMat K = chain();
