@@ -8,9 +8,10 @@
 // inner nodes at their current x. Mesh: structured annulus of nr x nc
 // quadrilaterals (10 x 72; fig 8: 5 x 18), node (i, j) at
 //   x = (1 - i/nr) (A cos t, B sin t) + (i/nr) R (cos t, sin t), t = 2 pi j / nc
-// with t graded by refine = k: t = tau - k sin(2 tau)/2, tau = 2 pi j / nc
-// (k > 0: smaller cells at the ends of the ellipse's long axis, as the paper
-// refines there by an amount it does not give; k = 0 uniform). Four points
+// with t graded by refine = k: t = tau - (1 - i/nr) k sin(2 tau)/2, tau =
+// 2 pi j / nc (k > 0: smaller cells at the ends of the ellipse's long axis,
+// as the paper refines there by an amount it does not give, fading to uniform
+// at the outer circle, whose chords stay short; k = 0 uniform). Four points
 // per cell (fillCells: 2 x 2 Gauss positions for MPM and FE, sub-cell domains
 // for CPDI). "Moving mesh" (sec 3.2): for MPM and CPDI the mesh is rebuilt
 // at the start of each step rigidly rotated with the inner boundary,
@@ -53,8 +54,9 @@ Params params() {
   P.push_back(Param("hole", 0).choice(0, {"circle", "ellipse"})
                   .help("inner boundary: circle A = B = 5 or ellipse A = 6, B = 4 (fig 5)"));
   P.push_back(Param("refine", 0).range(0, 0.9)
-                  .help("circumferential grading k: theta = tau - k sin(2 tau)/2, cells (1 + k)/(1 - k) times "
-                        "smaller at theta = 0, 180 degrees (the ellipse's long axis) than at 90 (0: uniform)"));
+                  .help("circumferential grading k at the hole: theta = tau - (1 - i/nr) k sin(2 tau)/2, cells "
+                        "(1 + k)/(1 - k) times smaller at theta = 0, 180 degrees (the ellipse's long axis) "
+                        "than at 90 on the hole, uniform on the outer circle (0: uniform)"));
   P.push_back(Param("dalpha", 5).range(0, 45).help("clockwise rotation of the inner boundary per step (degrees)"));
   P.push_back(Param("fem", 0).integer(0, 1)
                   .help("1: finite element mode (the mesh moves with the nodes; mpType=1 only)"));
@@ -76,7 +78,7 @@ Eigen::MatrixX2d nodes0(const Params& P) {  // node n = i nc + j
   for (int i = 0; i <= nr; ++i)
     for (int j = 0; j < nc; ++j) {
       const double tau = 2 * M_PI * j / nc, s = double(i) / nr;
-      const double t = tau - 0.5 * get(P, "refine") * std::sin(2 * tau);  // graded round the hole
+      const double t = tau - 0.5 * (1 - s) * get(P, "refine") * std::sin(2 * tau);  // graded at the hole
       X.row(i * nc + j) << (1 - s) * holeA(P) * std::cos(t) + s * R * std::cos(t),
           (1 - s) * holeB(P) * std::sin(t) + s * R * std::sin(t);
     }
