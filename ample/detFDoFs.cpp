@@ -51,6 +51,9 @@ std::vector<int> detFDoFs(const Mesh& mesh, const std::vector<MaterialPoint>& mp
 
   for (const MaterialPoint& mp : mpData) {  // nodes only one CPDI corner reaches
     if (!isCPDI(mp)) continue;
+    bool lone = false;                      // a node that only this point reaches?
+    for (int v = 0; v < mp.nn; ++v) lone = lone || links[mp.nIN[v]] == 1;
+    if (!lone) continue;
     const CornerBasis S = cornerBasis(mesh, mp, domainCorners(mp));
     int keep[4][nD];                        // per corner and direction: the free dof kept
     for (auto& k : keep) k[0] = k[1] = -1;
