@@ -27,6 +27,7 @@ namespace funnel     { Params params(); Analysis setupGrid(const Params&); Resul
 namespace annulus    { Params params(); Analysis setupGrid(const Params&); Results results(const Analysis&, const Params&); }
 namespace doughnut   { Params params(); Analysis setupGrid(const Params&); Results results(const Analysis&, const Params&); }
 namespace footing    { Params params(); Analysis setupGrid(const Params&); Results results(const Analysis&, const Params&); }
+namespace squeeze    { Params params(); Analysis setupGrid(const Params&); Results results(const Analysis&, const Params&); }
 
 const std::vector<Setup>& setupsTable() {
   static const std::vector<Setup> table = {
@@ -56,6 +57,8 @@ const std::vector<Setup>& setupsTable() {
        funnel::params, funnel::setupGrid, funnel::results},
       {"doughnut", "twist of a confined annulus on an annular quad mesh: MPM, CPDI1, CPDI2, FE mode (seed 001 sec 3.2)",
        doughnut::params, doughnut::setupGrid, doughnut::results},
+      {"squeeze", "elastic block squeezed from above, sides free: the worked setup of docs/new-setup.md",
+       squeeze::params, squeeze::setupGrid, squeeze::results},
   };
   return table;
 }
