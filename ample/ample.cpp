@@ -105,7 +105,7 @@ void solve(Analysis& an, RunLog& log, const RunOptions& opt) {
         const LinSolveOut ls = timed(T.linSolve, linSolve, bc, mps.Kt, oobf, NRit, fd, &Kff);
         uvw += ls.duvw;                                              // eq 29
         frct += ls.drct;
-        mps = timed(T.detMPs, detMPs, uvw, mpData, an.formulation, std::move(mps.Kt));
+        timed(T.detMPs, [&] { detMPs(uvw, mpData, an.formulation, mps); });  // fint, Kt in place
         addGhostPenalty(Kgp, uvw, mps.Kt, mps.fint);                 // remedy (off: nothing)
         fib = addImplicitBoundaries(ib, uvw, mps.Kt, mps.fint);      // seed 003 (none: 0)
         oobf = fext - mps.fint + frct;                               // eq 31 with reactions
@@ -188,6 +188,7 @@ static void checkAnalysis(const Analysis& an) {
 // the start of load step lstp: its progress line, its clock, the setup's hook
 static void startStep(Analysis& an, int lstp, RunLog& log, bool quiet) {
   if (!quiet) std::printf("%s: load step %d of %d\n", an.name.c_str(), lstp, an.lstps);
+  std::fflush(stdout);  // seen per step also when stdout is a file
   log.stepClock.lap();
   if (an.beforeStep) an.beforeStep(an, lstp);
 }
