@@ -85,6 +85,7 @@ void solve(Analysis& an, RunLog& log, const RunOptions& opt) {
   Timers& T = log.t;
   const int nDoF = mesh.nDoF();
   LoadSteps loadSteps(an.lstps, an.substeps, opt.lastStep);          // lstp = 1 .. lstps
+  FreeSystem Kff{an.solver};                                         // Kt(fd,fd), analysed once
   for (Increment inc; loadSteps.next(inc);) {                        // load steps
     const int lstp = inc.lstp;
     if (inc.first) startStep(an, lstp, log, opt.quiet);              // progress, setup's hook
@@ -95,7 +96,6 @@ void solve(Analysis& an, RunLog& log, const RunOptions& opt) {
     const std::vector<int> fd = timed(T.detFDoFs, detFDoFs, mesh, mpData);
     Eigen::VectorXd uvw = Eigen::VectorXd::Zero(nDoF), frct = uvw, oobf = fext, fib = uvw;
     DetMPsOut mps{uvw, timed(T.detMPs, stiffnessPattern, nDoF, mpData)};  // Kt's sparsity, once
-    FreeSystem Kff;                                                  // Kt(fd,fd), analysed once
     const SpMat Kgp = ghostPenaltyOf(an);                            // remedy (off: empty)
     const ImplicitBoundaries ib = implicitBoundariesOf(an, inc);     // seed 003 (none: empty)
     double fErr = 1.0;

@@ -18,6 +18,7 @@ Analysis baseAnalysis(const Params& P) {
   an.lstps = int(get(P, "lstps"));
   an.tol = get(P, "tol");
   an.NRitMax = int(get(P, "NRitMax"));
+  an.solver = LinearSolver(int(get(P, "solver")));
   an.substeps = int(get(P, "substeps"));
   an.ghost = get(P, "ghost");
   an.formulation = Formulation(int(get(P, "formulation")));
