@@ -26,33 +26,36 @@ double gridBasis(const Mesh& mesh, int node, const Vector2d& x) {
   return SvpMPM(x(0) - mesh.coord(node, 0), mesh.h(0)).S * SvpMPM(x(1) - mesh.coord(node, 1), mesh.h(1)).S;
 }
 
-static void cpdiBasis(const Mesh& mesh, MaterialPoint& mp) {
-  const Corners x = domainCorners(mp);
-  for (int v = 0; v < mp.nn; ++v) {
-    Eigen::Vector4d Sc;  // grid basis of node v at the four corners
-    for (int c = 0; c < 4; ++c) Sc(c) = gridBasis(mesh, mp.nIN[v], x.col(c));
-    const Basis2D b = (mp.mpType == MpType::CPDI1) ? SvpCPDI1(Sc, mp.st) : SvpCPDI2(Sc, x);
-    mp.Svp[v] = b.S;
-    mp.dSvp.col(v) = b.dS;
+// a general mesh: each corner's cell searched once (outside the mesh: cornerCell's cell,
+// its basis continued to the corner), the value of each of the point's nodes there
+static CornerBasis cornerMeshBasis(const Mesh& mesh, const MaterialPoint& mp, const Corners& x) {
+  CornerBasis S = CornerBasis::Zero();
+  for (int c = 0; c < 4; ++c) {
+    int e = findCell(mesh, x.col(c));
+    if (e < 0) e = cornerCell(mesh, x.col(c), mp.mpC);
+    const CellBasis b = cellBasis(mesh, e, x.col(c));
+    for (int v = 0; v < mp.nn; ++v) {
+      const int a = localNode(mesh, e, mp.nIN[v]);
+      S(v, c) = a < 0 ? 0.0 : b.N[a];
+    }
   }
+  return S;
 }
 
-// a general mesh: CPDI from the cell basis at the corners (each corner's cell searched once)
-static void cpdiMeshBasis(const Mesh& mesh, MaterialPoint& mp) {
+CornerBasis cornerBasis(const Mesh& mesh, const MaterialPoint& mp, const Corners& x) {
+  if (!mesh.regular()) return cornerMeshBasis(mesh, mp, x);
+  CornerBasis S = CornerBasis::Zero();
+  for (int v = 0; v < mp.nn; ++v)
+    for (int c = 0; c < 4; ++c) S(v, c) = gridBasis(mesh, mp.nIN[v], x.col(c));
+  return S;
+}
+
+// CPDI1 / CPDI2 from the grid (or cell) basis of each node at the four corners
+static void cpdiBasis(const Mesh& mesh, MaterialPoint& mp) {
   const Corners x = domainCorners(mp);
-  int ec[4];
-  CellBasis bc[4];
-  for (int c = 0; c < 4; ++c) {
-    ec[c] = findCell(mesh, x.col(c));  // just past the mesh edge: the cell of the moved corner
-    if (ec[c] < 0) ec[c] = cellOf(mesh, x.col(c) + 1e-6 * (mp.mpC - x.col(c)));
-    bc[c] = cellBasis(mesh, ec[c], x.col(c));
-  }
+  const CornerBasis S = cornerBasis(mesh, mp, x);
   for (int v = 0; v < mp.nn; ++v) {
-    Eigen::Vector4d Sc;  // cell basis of node v at the four corners
-    for (int c = 0; c < 4; ++c) {
-      const int a = localNode(mesh, ec[c], mp.nIN[v]);
-      Sc(c) = a < 0 ? 0.0 : bc[c].N[a];
-    }
+    const Eigen::Vector4d Sc = S.row(v).transpose();  // basis of node v at the four corners
     const Basis2D b = (mp.mpType == MpType::CPDI1) ? SvpCPDI1(Sc, mp.st) : SvpCPDI2(Sc, x);
     mp.Svp[v] = b.S;
     mp.dSvp.col(v) = b.dS;
@@ -75,8 +78,8 @@ static void meshMPMbasis(const Mesh& mesh, MaterialPoint& mp) {
 }
 
 void MPMbasis(const Mesh& mesh, MaterialPoint& mp) {
-  if (!mesh.regular()) return isCPDI(mp) ? cpdiMeshBasis(mesh, mp) : meshMPMbasis(mesh, mp);
   if (isCPDI(mp)) return cpdiBasis(mesh, mp);
+  if (!mesh.regular()) return meshMPMbasis(mesh, mp);
   // BEGIN EXERCISE MPMbasis
   for (int v = 0; v < mp.nn; ++v) {
     Basis1D b[nD];

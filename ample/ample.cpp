@@ -85,17 +85,17 @@ void solve(Analysis& an, RunLog& log, const RunOptions& opt) {
   Timers& T = log.t;
   const int nDoF = mesh.nDoF();
   LoadSteps loadSteps(an.lstps, an.substeps, opt.lastStep);          // lstp = 1 .. lstps
+  FreeSystem Kff{an.solver};                                         // Kt(fd,fd), analysed once
   for (Increment inc; loadSteps.next(inc);) {                        // load steps
     const int lstp = inc.lstp;
     if (inc.first) startStep(an, lstp, log, opt.quiet);              // progress, setup's hook
-    timed(T.elemMPinfo, elemMPinfo, mesh, mpData);                   // basis functions
+    timed(T.elemMPinfo, elemMPinfo, mesh, mpData, an.fem);           // basis functions
     Eigen::VectorXd fext = timed(T.detExtForce, detExtForce, nDoF, an.g, mpData) * inc.lf1;
     if (an.bodyForce) fext += timed(T.detExtForce, detBodyForce, nDoF, an.bodyForce, inc.lf1, mpData);
     const std::vector<BC> bc = scaled(mesh.bc, inc.bcScale(an.lstps));  // increments of this step
     const std::vector<int> fd = timed(T.detFDoFs, detFDoFs, mesh, mpData);
     Eigen::VectorXd uvw = Eigen::VectorXd::Zero(nDoF), frct = uvw, oobf = fext, fib = uvw;
     DetMPsOut mps{uvw, timed(T.detMPs, stiffnessPattern, nDoF, mpData)};  // Kt's sparsity, once
-    FreeSystem Kff;                                                  // Kt(fd,fd), analysed once
     const SpMat Kgp = ghostPenaltyOf(an);                            // remedy (off: empty)
     const ImplicitBoundaries ib = implicitBoundariesOf(an, inc);     // seed 003 (none: empty)
     double fErr = 1.0;
@@ -105,7 +105,7 @@ void solve(Analysis& an, RunLog& log, const RunOptions& opt) {
         const LinSolveOut ls = timed(T.linSolve, linSolve, bc, mps.Kt, oobf, NRit, fd, &Kff);
         uvw += ls.duvw;                                              // eq 29
         frct += ls.drct;
-        mps = timed(T.detMPs, detMPs, uvw, mpData, an.formulation, std::move(mps.Kt));
+        timed(T.detMPs, [&] { detMPs(uvw, mpData, an.formulation, mps); });  // fint, Kt in place
         addGhostPenalty(Kgp, uvw, mps.Kt, mps.fint);                 // remedy (off: nothing)
         fib = addImplicitBoundaries(ib, uvw, mps.Kt, mps.fint);      // seed 003 (none: 0)
         oobf = fext - mps.fint + frct;                               // eq 31 with reactions
@@ -188,6 +188,7 @@ static void checkAnalysis(const Analysis& an) {
 // the start of load step lstp: its progress line, its clock, the setup's hook
 static void startStep(Analysis& an, int lstp, RunLog& log, bool quiet) {
   if (!quiet) std::printf("%s: load step %d of %d\n", an.name.c_str(), lstp, an.lstps);
+  std::fflush(stdout);  // seen per step also when stdout is a file
   log.stepClock.lap();
   if (an.beforeStep) an.beforeStep(an, lstp);
 }

@@ -31,6 +31,7 @@ struct Analysis {
   std::function<Vector2d(const Vector2d& X, double lf)> bodyForce;
   double tol = 1e-9;                  // Newton-Raphson tolerance on fErr (eq 35)
   int NRitMax = 10;                   // most Newton-Raphson passes per load step
+  LinearSolver solver = LinearSolver::LU;  // Kt(fd,fd): SparseLU, or SimplicialLDLT when symmetric
   int substeps = 0;                   // halvings of a failed load step allowed (0: none)
   double ghost = 0;                   // ghost-penalty factor of the edge cells (0: none)
   int ghostFrom = 0;                  // first load step the penalty was needed (0: not yet)

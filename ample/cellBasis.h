@@ -11,8 +11,9 @@
 // xi from x by Newton iterations on r(xi) = x(xi) - x, starting at xi = 0:
 //   J = dx/dxi = sum_a x_a (dN_a/dxi)^T,  xi <- xi - J^-1 r,
 // with coordinates taken about the cell's first node (so round-off is
-// relative to the cell size), until |dxi|_inf <= 1e-14 (RunError after 30
-// passes or when det J <= 0); then grad N_a = J^-T dN_a/dxi. A local coordinate
+// relative to the cell size), until |dxi|_inf <= 1e-14 (after 30 passes a
+// step <= 1e-12 is taken as round-off of a distorted cell; RunError beyond that
+// or when det J <= 0); then grad N_a = J^-T dN_a/dxi. A local coordinate
 // within 1e-14 of a cell edge (xi = +-1; a barycentric coordinate 0) is put on
 // it, so the nodes off that edge get exactly N = 0 there, as SvpMPM gives on
 // the grid (dropNullNodes and detFDoFs test for exact zeros).

@@ -112,4 +112,18 @@ int cellOf(const Mesh& mesh, const Vector2d& x) {
   throw RunError(msg.str());
 }
 
+// a CPDI domain corner: the cell that holds the corner moved 1e-6 of the way towards the
+// point (a corner on an edge goes to the domain's side); a corner outside every cell takes
+// the last cell along the line from the point to it (bisection, 40 halvings)
+int cornerCell(const Mesh& mesh, const Vector2d& corner, const Vector2d& mpC) {
+  const int e = findCell(mesh, corner + 1e-6 * (mpC - corner));
+  if (e >= 0) return e;
+  double in = 0.0, out = 1.0;  // mpC + t (corner - mpC): inside at t = in, outside at t = out
+  for (int k = 0; k < 40; ++k) {
+    const double t = 0.5 * (in + out);
+    (findCell(mesh, mpC + t * (corner - mpC)) >= 0 ? in : out) = t;
+  }
+  return cellOf(mesh, mpC + in * (corner - mpC));  // throws if the point itself is outside
+}
+
 }  // namespace ample

@@ -13,9 +13,15 @@
 // shared edge or vertex goes to the lowest-numbered cell that holds it; on a
 // regular grid numbered row by row this is the cell to the left / below, as
 // elemForMP's rule for standard MPM.
+// cornerCell: the cell of a CPDI domain corner: the cell that holds the corner
+// moved 1e-6 of the way towards its point (on an edge: the domain's side); a
+// corner outside the mesh (a domain that sticks out past a curved boundary or
+// into a hole) takes the last cell along the line from the point to the corner
+// (found by bisection), whose basis cellBasis continues beyond its edge.
 // Inputs:  mesh (type, coord, etpl; search for findCell) · x (2)
 // Outputs: mesh.search (buildCellSearch) · cell number, or -1 outside every
-//          cell (findCell) · cellOf: the cell, or RunError naming the point
+//          cell (findCell) · cellOf: the cell, or RunError naming the point ·
+//          cornerCell: a cell (RunError if the point is outside)
 // Tests:   tests/test_mesh.cpp
 //--------------------------------------------------------------------------
 #pragma once
@@ -27,6 +33,7 @@ void buildCellSearch(Mesh& mesh);
 bool insideCell(const Mesh& mesh, int e, const Vector2d& x);  // the edge test above
 int findCell(const Mesh& mesh, const Vector2d& x);            // -1: outside every cell
 int cellOf(const Mesh& mesh, const Vector2d& x);              // throws RunError outside
+int cornerCell(const Mesh& mesh, const Vector2d& corner, const Vector2d& mpC);  // below
 const char* meshName(const Mesh& mesh);  // "regular grid", "triangle mesh", "quadrilateral mesh"
 
 }  // namespace ample

@@ -28,12 +28,12 @@ std::vector<int> activeCellDoFs(const Mesh& mesh) {
   return listFree(isFree, mesh);
 }
 
-// the only domain corner of a CPDI point at which the grid basis of `node` is
-// non-zero, or -1 (none, or more than one)
-static int singleCorner(const Mesh& mesh, const Corners& x, int node) {
+// the only domain corner at which the basis of the point's node v is non-zero,
+// or -1 (none, or more than one); S = cornerBasis at the corners
+static int singleCorner(const CornerBasis& S, int v) {
   int only = -1;
   for (int c = 0; c < 4; ++c)
-    if (gridBasis(mesh, node, x.col(c)) != 0.0) {
+    if (S(v, c) != 0.0) {
       if (only >= 0) return -1;
       only = c;
     }
@@ -54,13 +54,16 @@ std::vector<int> detFDoFs(const Mesh& mesh, const std::vector<MaterialPoint>& mp
 
   for (const MaterialPoint& mp : mpData) {  // nodes only one CPDI corner reaches
     if (!isCPDI(mp)) continue;
-    const Corners x = domainCorners(mp);
+    bool lone = false;                      // a node that only this point reaches?
+    for (int v = 0; v < mp.nn; ++v) lone = lone || links[mp.nIN[v]] == 1;
+    if (!lone) continue;
+    const CornerBasis S = cornerBasis(mesh, mp, domainCorners(mp));
     int keep[4][nD];                        // per corner and direction: the free dof kept
     for (auto& k : keep) k[0] = k[1] = -1;
     for (int v = 0; v < mp.nn; ++v) {
       const int n = mp.nIN[v];
       if (links[n] != 1) continue;
-      const int c = singleCorner(mesh, x, n);
+      const int c = singleCorner(S, v);
       if (c < 0) continue;
       for (int i = 0; i < nD; ++i) {
         const int d = dof(n, i);

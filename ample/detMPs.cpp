@@ -99,11 +99,11 @@ PointTerms smallStrainPoint(const Matrix3d& H, MaterialPoint& mp) {  // H = grad
 
 }  // namespace
 
-DetMPsOut detMPs(const Eigen::VectorXd& uvw, std::vector<MaterialPoint>& mpData,
-                 Formulation form, SpMat pattern) {
+void detMPs(const Eigen::VectorXd& uvw, std::vector<MaterialPoint>& mpData, Formulation form,
+            DetMPsOut& out) {
   const int nDoF = int(uvw.size());
-  if (pattern.rows() != nDoF || pattern.nonZeros() == 0) pattern = stiffnessPattern(nDoF, mpData);
-  DetMPsOut out{Eigen::VectorXd::Zero(nDoF), std::move(pattern)};
+  if (out.Kt.rows() != nDoF || out.Kt.nonZeros() == 0) out.Kt = stiffnessPattern(nDoF, mpData);
+  out.fint.setZero(nDoF);
   out.Kt.coeffs().setZero();                                    // the pattern's values only
 
   for (MaterialPoint& mp : mpData) {
@@ -134,6 +134,11 @@ DetMPsOut detMPs(const Eigen::VectorXd& uvw, std::vector<MaterialPoint>& mpData,
     // END EXERCISE
     addToPattern(out.Kt, d, ne, ke.topLeftCorner(ne, ne));      // eq 30
   }
+}
+
+DetMPsOut detMPs(const Eigen::VectorXd& uvw, std::vector<MaterialPoint>& mpData, Formulation form) {
+  DetMPsOut out;
+  detMPs(uvw, mpData, form, out);
   return out;
 }
 

@@ -20,12 +20,15 @@
 //   and F stays I, so the volume stays V_p0 (updateMPs: V_p = det(F) V_p0).
 // Plane strain: only the in-plane displacement gradient enters; F, b_e and
 // stress are 3D.
-// Kt is assembled into `pattern`, the sparsity of the load step (the points
-// link the same nodes in every iteration): stiffnessPattern builds it once per
-// step, each pass only refills its values. An empty pattern is built here.
+// Kt is assembled into the sparsity of the load step (the points link the
+// same nodes in every iteration): the main loop passes its DetMPsOut, whose Kt
+// from the last pass (or stiffnessPattern, once per step) keeps its pattern
+// and only has its values refilled, in place (an Eigen 3.4 SparseMatrix has
+// no move constructor: a result returned by value would copy it every pass).
+// An empty Kt gets its pattern here. The second form returns a fresh result.
 // Inputs:  uvw (nDoF) displacement increment of the step · mpData · form ·
-//          pattern (optional: the Kt of an earlier pass of the same step)
-// Outputs: fint (nDoF) · Kt (nDoF x nDoF) · mpData (F, sig, epsE) updated
+//          out (in place: Kt with the step's pattern, or empty)
+// Outputs: out.fint (nDoF) · out.Kt (nDoF x nDoF) · mpData (F, sig, epsE) updated
 // Tests:   tests/test_detMPs.cpp, tests/test_smallStrain.cpp (SS)
 //--------------------------------------------------------------------------
 #pragma once
@@ -39,7 +42,9 @@ struct DetMPsOut {
   SpMat Kt;              // global tangent stiffness
 };
 
+void detMPs(const Eigen::VectorXd& uvw, std::vector<MaterialPoint>& mpData, Formulation form,
+            DetMPsOut& out);
 DetMPsOut detMPs(const Eigen::VectorXd& uvw, std::vector<MaterialPoint>& mpData,
-                 Formulation form = Formulation::UL, SpMat pattern = SpMat());
+                 Formulation form = Formulation::UL);
 
 }  // namespace ample

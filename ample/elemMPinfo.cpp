@@ -14,14 +14,14 @@
 
 namespace ample {
 
-// CPDI on a general mesh: the cells that hold the four corners, each moved 1e-6 of
-// the way towards the point so that a corner on an edge goes to the domain's side
+// CPDI on a general mesh: the cells of the four corners (cornerCell: on an edge the
+// domain's side; outside the mesh the last cell on the way from the point)
 static int meshCellsOfCorners(const Mesh& mesh, const MaterialPoint& mp, std::array<int, MAXE>& eIN) {
   cellOf(mesh, mp.mpC);  // throws if the point left the mesh
   const Corners x = domainCorners(mp);
   int ne = 0;
   for (int c = 0; c < 4; ++c) {
-    const int e = cellOf(mesh, x.col(c) + 1e-6 * (mp.mpC - x.col(c)));
+    const int e = cornerCell(mesh, x.col(c), mp.mpC);
     if (std::find(eIN.begin(), eIN.begin() + ne, e) == eIN.begin() + ne) eIN[ne++] = e;
   }
   std::sort(eIN.begin(), eIN.begin() + ne);
@@ -31,7 +31,7 @@ static int meshCellsOfCorners(const Mesh& mesh, const MaterialPoint& mp, std::ar
 // CPDI: the cells that contain the four domain corners (seed 001 sec 2 (iii));
 // a corner on a cell edge is taken into the cell on the domain's side of it,
 // a corner past the grid edge into the cell at the edge (the point must be inside)
-// (a general mesh: the corner must lie in a cell, cellOf)
+// (a general mesh: cornerCell)
 static int cellsOfCorners(const Mesh& mesh, const MaterialPoint& mp, std::array<int, MAXE>& eIN) {
   if (!mesh.regular()) return meshCellsOfCorners(mesh, mp, eIN);
   std::array<int, MAXE> e;
@@ -71,13 +71,14 @@ int dropNullNodes(MaterialPoint& mp) {
   return mp.nn = k;
 }
 
-void elemMPinfo(Mesh& mesh, std::vector<MaterialPoint>& mpData) {
+void elemMPinfo(Mesh& mesh, std::vector<MaterialPoint>& mpData, bool keepCells) {
   mesh.eInA.assign(mesh.nels(), 0);
   if (!mesh.regular()) buildCellSearch(mesh);  // a setup may have moved the mesh's nodes
   for (size_t p = 0; p < mpData.size(); ++p) {
     MaterialPoint& mp = mpData[p];
     try {
-      if (isCPDI(mp)) mp.ne = cellsOfCorners(mesh, mp, mp.eIN);
+      if (keepCells && mp.ne == 1) {}             // FE mode: the point's own cell, no search
+      else if (isCPDI(mp)) mp.ne = cellsOfCorners(mesh, mp, mp.eIN);
       else mp.ne = elemForMP(mesh, mp.mpC, mp.lp, mp.eIN);
     } catch (const RunError& e) {
       throw RunError("point " + std::to_string(p) + ": " + e.what());

@@ -8,7 +8,11 @@
 // cells their domain overlaps (elemForMP); CPDI points the cells holding their
 // four domain corners (seed 001 sec 2 (iii)). A node of those cells whose basis
 // value and gradient are both zero at the point is not linked (dropNullNodes).
-// Inputs:  mesh · mpData (mpC, lp, mpType)
+// keepCells (the finite element mode, Analysis::fem): a point that has its
+// cell from an earlier step keeps it without a search, as an integration point
+// keeps its element however the element distorts (a non-convex cell fails the
+// search's edge test but its isoparametric map still holds at the point).
+// Inputs:  mesh · mpData (mpC, lp, mpType; eIN, ne when keepCells) · keepCells
 // Outputs: mpData (eIN, ne, nIN, nn, Svp, dSvp) · mesh.eInA (nels)
 // Tests:   tests/test_basis.cpp
 //--------------------------------------------------------------------------
@@ -17,7 +21,7 @@
 
 namespace ample {
 
-void elemMPinfo(Mesh& mesh, std::vector<MaterialPoint>& mpData);
+void elemMPinfo(Mesh& mesh, std::vector<MaterialPoint>& mpData, bool keepCells = false);
 int dropNullNodes(MaterialPoint& mp);  // unlink nodes with S = 0 and dS = 0; returns the new nn
 
 }  // namespace ample

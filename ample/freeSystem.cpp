@@ -4,6 +4,7 @@
 // See freeSystem.h for what it saves, inputs and outputs.
 //--------------------------------------------------------------------------
 #include "freeSystem.h"
+#include <algorithm>
 
 namespace ample {
 
@@ -21,13 +22,23 @@ void buildFreeSystem(const SpMat& Kt, const std::vector<int>& fd, FreeSystem& S)
   S.Kff.setFromTriplets(trip.begin(), trip.end());      // no duplicates: each value is one e
   S.fromKt.resize(S.Kff.nonZeros());
   for (int e = 0; e < S.Kff.nonZeros(); ++e) S.fromKt[e] = int(S.Kff.valuePtr()[e]);
-  S.solver.analyzePattern(S.Kff);                       // symbolic analysis, once per pattern
+  S.lu.analyzePattern(S.Kff);                           // symbolic analysis, once per pattern
+  if (S.choice == LinearSolver::LDLT) S.ldlt.analyzePattern(S.Kff);
   S.fd = fd;
-  S.ktNonZeros = Kt.nonZeros();
+  S.ktOuter.assign(Kt.outerIndexPtr(), Kt.outerIndexPtr() + Kt.outerSize() + 1);
+  S.ktInner.assign(Kt.innerIndexPtr(), Kt.innerIndexPtr() + Kt.nonZeros());
+  S.builds++;
+}
+
+// Kt has the pattern S was built for (the same step, or a step whose points link the same nodes)
+static bool samePattern(const SpMat& Kt, const FreeSystem& S) {
+  return S.ktOuter.size() == size_t(Kt.outerSize() + 1) && S.ktInner.size() == size_t(Kt.nonZeros()) &&
+         std::equal(S.ktOuter.begin(), S.ktOuter.end(), Kt.outerIndexPtr()) &&
+         std::equal(S.ktInner.begin(), S.ktInner.end(), Kt.innerIndexPtr());
 }
 
 void refillFreeSystem(const SpMat& Kt, const std::vector<int>& fd, FreeSystem& S) {
-  if (S.fd != fd || S.ktNonZeros != Kt.nonZeros()) buildFreeSystem(Kt, fd, S);
+  if (S.fd != fd || !samePattern(Kt, S)) buildFreeSystem(Kt, fd, S);
   for (int e = 0; e < S.Kff.nonZeros(); ++e) S.Kff.valuePtr()[e] = Kt.valuePtr()[S.fromKt[e]];
 }
 

@@ -5,8 +5,40 @@
 //--------------------------------------------------------------------------
 #include "linSolve.h"
 #include "errors.h"
+#include <cstdio>
 
 namespace ample {
+
+// Kt(fd,fd) symmetric to 1e-12 of its largest entry (the pattern is symmetric)
+static bool symmetric(const SpMat& K) {
+  const SpMat T = K.transpose();
+  const double big = K.coeffs().cwiseAbs().maxCoeff();
+  const SpMat D = K - T;
+  return D.nonZeros() == 0 || D.coeffs().cwiseAbs().maxCoeff() <= 1e-12 * big;
+}
+
+// numeric factorisation of S.Kff and the solve: SparseLU, or (choice LDLT) SimplicialLDLT
+// when Kff is symmetric and its solve is accurate to 1e-10 (else LU); RunError when LU fails
+static Eigen::VectorXd factorisedSolve(FreeSystem& S, const Eigen::VectorXd& rhs) {
+  const std::string singular = "): the problem is singular, e.g. a rigid-body mode without enough "
+                               "boundary conditions or a nearly empty cell";
+  if (S.choice == LinearSolver::LDLT) {
+    if (symmetric(S.Kff)) {  // without pivoting: a poor solve of an indefinite Kff goes to LU
+      S.ldlt.factorize(S.Kff);
+      if (S.ldlt.info() == Eigen::Success) {
+        Eigen::VectorXd x = S.ldlt.solve(rhs);
+        if ((S.Kff * x - rhs).norm() <= 1e-10 * rhs.norm()) return x;
+      }
+    }
+    if (S.fallbacks++ == 0)
+      std::fprintf(stderr, "solver=LDLT: Kt(fd,fd) not symmetric to 1e-12 or its LDLT solve inexact: "
+                           "SparseLU solves such passes\n");
+  }
+  S.lu.factorize(S.Kff);                                // numeric factorisation only
+  if (S.lu.info() != Eigen::Success)
+    throw RunError("SparseLU could not factorise the stiffness Kt(fd,fd) (" + S.lu.lastErrorMessage() + singular);
+  return S.lu.solve(rhs);
+}
 
 LinSolveOut linSolve(const std::vector<BC>& bc, const SpMat& Kt, const Eigen::VectorXd& oobf,
                      int NRit, const std::vector<int>& fd, FreeSystem* cache) {
@@ -29,12 +61,7 @@ LinSolveOut linSolve(const std::vector<BC>& bc, const SpMat& Kt, const Eigen::Ve
   Eigen::VectorXd rhs(nfd);
   for (int r = 0; r < nfd; ++r) rhs(r) = oobf(fd[r]) - Kd(fd[r]);
 
-  S.solver.factorize(S.Kff);                            // numeric factorisation only
-  if (S.solver.info() != Eigen::Success)
-    throw RunError("SparseLU could not factorise the stiffness Kt(fd,fd) (" +
-                   S.solver.lastErrorMessage() + "): the problem is singular, e.g. a rigid-body "
-                   "mode without enough boundary conditions or a nearly empty cell");
-  const Eigen::VectorXd x = S.solver.solve(rhs);
+  const Eigen::VectorXd x = factorisedSolve(S, rhs);
   const double res = (S.Kff * x - rhs).norm(), scale = rhs.norm() + 1e-300;
   if (!(res <= 1e-3 * scale))                           // a zero pivot: no solution exists
     throw RunError("the stiffness Kt(fd,fd) is singular (linear solve residual " +

@@ -28,6 +28,7 @@ constexpr int MAXE = 9;      // most cells one point domain may overlap (3 x 3)
 enum class MpType { MPM = 1, GIMP = 2, CPDI1 = 3, CPDI2 = 4 };  // seed 002: mpType (+ seed 001)
 enum class CmType { Elastic = 1, VonMises = 2 };                 // seed 002: cmType
 enum class Formulation { UL = 1, PC = 2, SS = 3 };  // updated / previously converged Lagrangian
+enum class LinearSolver { LU = 0, LDLT = 1 };       // SparseLU (design card) / SimplicialLDLT if symmetric
                                                     // (seed 000), small strain (seed 003 sec 2)
 enum class DomainUpdate {                   // GIMP domain updating, seed 000 sec 6.4, table 2
   None = 0, DetF = 1, Fii = 2, Uii = 3, Corner = 4, FiiVol = 5, FiiVolInc = 6

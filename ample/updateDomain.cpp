@@ -14,10 +14,9 @@ namespace ample {
 // corners moved with the grid displacement (seed 000 eq 35, CPDI2)
 static Corners moveCorners(const Mesh& mesh, const Eigen::VectorXd& uvw, const MaterialPoint& mp,
                            Corners x) {
-  const Corners x0 = x;
+  const CornerBasis S = cornerBasis(mesh, mp, x);
   for (int c = 0; c < 4; ++c)
-    for (int v = 0; v < mp.nn; ++v)
-      x.col(c) += gridBasis(mesh, mp.nIN[v], x0.col(c)) * uvw.segment<nD>(dof(mp.nIN[v], 0));
+    for (int v = 0; v < mp.nn; ++v) x.col(c) += S(v, c) * uvw.segment<nD>(dof(mp.nIN[v], 0));
   return x;
 }
 

@@ -13,19 +13,7 @@ import sys
 import matplotlib
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt
-
-
-def read_vtk(path, field):
-    """points (x, y) and the named scalar of a legacy ASCII VTK file of ample"""
-    with open(path) as f:
-        lines = f.read().split("\n")
-    i = next(k for k, l in enumerate(lines) if l.startswith("POINTS"))
-    n = int(lines[i].split()[1])
-    xy = [tuple(map(float, lines[i + 1 + p].split()[:2])) for p in range(n)]
-    j = next(k for k, l in enumerate(lines) if l.startswith("SCALARS " + field + " "))
-    start = j + 2 if lines[j + 1].startswith("LOOKUP_TABLE") else j + 1
-    values = [float(lines[start + p]) for p in range(n)]
-    return xy, values
+from run_output import read_vtk
 
 
 def main(argv):

@@ -10,8 +10,10 @@
 // along alternating diagonals. Points: mpTri per triangle, n = k^2: the
 // triangle cut into k^2 similar ones (k per edge), one point at each centroid;
 // n = 2 k^2: each of those cut again in two from the midpoint of its longest
-// edge. Volume = area / n. Standard MPM only (mpType 1: CPDI's square
-// domains of the points next to the circles would stick out of the mesh). Body force: the exact one
+// edge. Volume = area / n. MPM (the paper's), or CPDI1/CPDI2 with a square
+// domain of that area about each point (the corners of the points next to the
+// circles lie outside the mesh: cornerCell continues the edge cell's basis;
+// GIMP: InputError). Body force: the exact one
 // of the motion with alpha lf at load factor lf (bfLinear=1: lf times the
 // full one). Error (our reading of the paper's "absolute displacement error",
 // after eq 42): sum_p |u_p - u_a(X_p)| V0_p / V0 (m).
@@ -120,22 +122,17 @@ Analysis setupGrid(const Params& P) {
       const double R = std::hypot(X, Y);
       return std::abs(R - Ri) < 1e-9 || std::abs(R - Ro) < 1e-9;
     });
-  const MpType type = MpType(int(get(P, "mpType")));
-  if (type != MpType::MPM)  // a square domain of a point's area pokes out of the mesh at
-    throw InputError("mpType=" + std::to_string(int(type)) +  // the circles (docs/annulus.md)
-                     ": the annulus runs standard MPM only (mpType=1): CPDI's square domains "
-                     "of the points next to the fixed circles stick out of the triangle mesh");
+  if (MpType(int(get(P, "mpType"))) == MpType::GIMP)  // GIMP needs the regular grid
+    throw InputError("mpType=2 (GIMP) needs the regular grid; the annulus is a triangle mesh "
+                     "(use mpType=1 MPM, 3 CPDI1 or 4 CPDI2)");
   for (int c = 0; c < an.mesh.nels(); ++c) {
     std::vector<std::array<Vector2d, 3>> tris;
     const Vector2d a = coord.row(etpl(c, 0)), b = coord.row(etpl(c, 1)), d = coord.row(etpl(c, 2));
     triPoints(a, b, d, k, halve, tris);
     for (const auto& t : tris) {
-      MaterialPoint mp;
-      mp.mpType = type;
+      const double A = 0.5 * std::abs((t[1] - t[0]).x() * (t[2] - t[0]).y() - (t[1] - t[0]).y() * (t[2] - t[0]).x());
+      MaterialPoint mp = cellPoint((t[0] + t[1] + t[2]) / 3, A, P, 0.0);  // CPDI: a square of area A
       mp.cmType = CmType::Elastic;
-      mp.mpC = mp.X0 = (t[0] + t[1] + t[2]) / 3;
-      mp.vp = mp.vp0 = 0.5 * std::abs((t[1] - t[0]).x() * (t[2] - t[0]).y() - (t[1] - t[0]).y() * (t[2] - t[0]).x());
-      mp.mCst << get(P, "E"), get(P, "nu"), get(P, "rhoY");
       an.mpData.push_back(mp);
     }
   }

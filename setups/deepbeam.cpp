@@ -107,8 +107,7 @@ static Eigen::VectorXd linearSolution(Analysis& an) {
   elemMPinfo(an.mesh, an.mpData);
   const Eigen::VectorXd fext = detExtForce(nDoF, an.g, an.mpData);
   const std::vector<int> fd = detFDoFs(an.mesh, an.mpData);
-  const DetMPsOut mps = detMPs(Eigen::VectorXd::Zero(nDoF), an.mpData, Formulation::SS,
-                               stiffnessPattern(nDoF, an.mpData));
+  const DetMPsOut mps = detMPs(Eigen::VectorXd::Zero(nDoF), an.mpData, Formulation::SS);
   return linSolve(an.mesh.bc, mps.Kt, fext, 1, fd).duvw;
 }
 

@@ -8,7 +8,10 @@
 // inner nodes at their current x. Mesh: structured annulus of nr x nc
 // quadrilaterals (10 x 72; fig 8: 5 x 18), node (i, j) at
 //   x = (1 - i/nr) (A cos t, B sin t) + (i/nr) R (cos t, sin t), t = 2 pi j / nc
-// (not the paper's local refinement at the ellipse's long axis). Four points
+// with t graded by refine = k: t = tau - (1 - i/nr) k sin(2 tau)/2, tau =
+// 2 pi j / nc (k > 0: smaller cells at the ends of the ellipse's long axis,
+// as the paper refines there by an amount it does not give, fading to uniform
+// at the outer circle, whose chords stay short; k = 0 uniform). Four points
 // per cell (fillCells: 2 x 2 Gauss positions for MPM and FE, sub-cell domains
 // for CPDI). "Moving mesh" (sec 3.2): for MPM and CPDI the mesh is rebuilt
 // at the start of each step rigidly rotated with the inner boundary,
@@ -20,10 +23,14 @@
 // the mesh); CPDI2: the corner of a domain that starts on the node. With
 // nc = 18 (fig 8) a 5 degree turn is not a multiple of the cell angle 20
 // degrees: the rotated outer chords cut off the fixed material's CPDI corners
-// on the outer circle (the run stops: point outside the mesh).
+// on the outer circle (they take the continued basis of the edge cell,
+// cornerCell); a point itself outside a chord stops the run.
 // Outputs: history.csv per step: lstp, alpha (deg), f = sum of the reaction
 //          magnitudes on the inner nodes (reactionOver), f / (C E), C = 2 pi A
 //          (the inner circumference; for the ellipse still 2 pi A, stated);
+//          torque = the clockwise moment of those reactions about the centre at
+//          the nodes' end-of-step positions, torque / (C_h E), C_h = the hole's
+//          perimeter (fig 11: the ellipse's, Ramanujan's formula);
 //          results: fNorm at the last step, ux_i, uy_i of the sampling points
 // Tests:   tests/test_femode.cpp; CTest setup.doughnut
 //--------------------------------------------------------------------------
@@ -46,6 +53,10 @@ Params params() {
   P.push_back(Param("nc", 72).integer(4, 4000).help("cells round the annulus (paper 72; fig 8: 18)"));
   P.push_back(Param("hole", 0).choice(0, {"circle", "ellipse"})
                   .help("inner boundary: circle A = B = 5 or ellipse A = 6, B = 4 (fig 5)"));
+  P.push_back(Param("refine", 0).range(0, 0.9)
+                  .help("circumferential grading k at the hole: theta = tau - (1 - i/nr) k sin(2 tau)/2, cells "
+                        "(1 + k)/(1 - k) times smaller at theta = 0, 180 degrees (the ellipse's long axis) "
+                        "than at 90 on the hole, uniform on the outer circle (0: uniform)"));
   P.push_back(Param("dalpha", 5).range(0, 45).help("clockwise rotation of the inner boundary per step (degrees)"));
   P.push_back(Param("fem", 0).integer(0, 1)
                   .help("1: finite element mode (the mesh moves with the nodes; mpType=1 only)"));
@@ -66,7 +77,8 @@ Eigen::MatrixX2d nodes0(const Params& P) {  // node n = i nc + j
   Eigen::MatrixX2d X((nr + 1) * nc, 2);
   for (int i = 0; i <= nr; ++i)
     for (int j = 0; j < nc; ++j) {
-      const double t = 2 * M_PI * j / nc, s = double(i) / nr;
+      const double tau = 2 * M_PI * j / nc, s = double(i) / nr;
+      const double t = tau - 0.5 * (1 - s) * get(P, "refine") * std::sin(2 * tau);  // graded at the hole
       X.row(i * nc + j) << (1 - s) * holeA(P) * std::cos(t) + s * R * std::cos(t),
           (1 - s) * holeB(P) * std::sin(t) + s * R * std::sin(t);
     }
@@ -131,9 +143,17 @@ Analysis setupGrid(const Params& P) {
     if (!a.fem) a.mesh = generalMesh((X0 * rotation(-(lstp - 1) * dalpha).transpose()).eval(), T);
     conditions(a.mesh, P);
   };
+  const double a = holeA(P), b = holeB(P);  // the hole's perimeter (Ramanujan; 2 pi A for a circle)
+  const double Ch = M_PI * (3 * (a + b) - std::sqrt((3 * a + b) * (a + 3 * b)));
   an.afterStep = [=](Analysis& a, int lstp) {
     const double f = reactionOver(a.frct, inner).magnitudes;
-    a.history.push_back({{"lstp", lstp}, {"alpha", lstp * dalpha * 180 / M_PI}, {"f", f}, {"fNorm", f / (C * E)}});
+    double torque = 0;  // clockwise moment of the inner nodes' reactions about the centre
+    for (int j : inner) {
+      const Vector2d x = a.mesh.coord.row(j).transpose() + (a.fem ? Vector2d::Zero() : Vector2d(a.uvw.segment<2>(dof(j, 0))));
+      torque -= x(0) * a.frct(dof(j, 1)) - x(1) * a.frct(dof(j, 0));
+    }
+    a.history.push_back({{"lstp", lstp}, {"alpha", lstp * dalpha * 180 / M_PI}, {"f", f}, {"fNorm", f / (C * E)},
+                         {"torque", torque}, {"torqueNorm", torque / (Ch * E)}});
   };
   return an;
 }

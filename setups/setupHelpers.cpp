@@ -18,6 +18,7 @@ Analysis baseAnalysis(const Params& P) {
   an.lstps = int(get(P, "lstps"));
   an.tol = get(P, "tol");
   an.NRitMax = int(get(P, "NRitMax"));
+  an.solver = LinearSolver(int(get(P, "solver")));
   an.substeps = int(get(P, "substeps"));
   an.ghost = get(P, "ghost");
   an.formulation = Formulation(int(get(P, "formulation")));
@@ -86,13 +87,14 @@ Vector2d quadMap(const Eigen::Matrix<double, 2, 4>& X, double xi, double eta, do
   if (detJ) *detJ = cross2(dxi, deta);
   return x;
 }
+}  // namespace
+
 MaterialPoint cellPoint(const Vector2d& x, double V, const Params& P, double rho) {
   MaterialPoint pt = blockPoint(x, Vector2d::Constant(0.5 * std::sqrt(V)), P, rho);
   pt.vp0 = pt.vp = V;
   pt.mpM = rho * V;
   return pt;
 }
-}  // namespace
 
 void fillCells(std::vector<MaterialPoint>& mpData, const Mesh& mesh, const Params& P, double rho,
                int triPoints) {

@@ -49,6 +49,8 @@ void fillPolygon(std::vector<MaterialPoint>& mpData, const Vector2d& corner, int
 // xi = 0, eta = 0) as domains for CPDI1 / CPDI2 (point at the sub-cell's centre,
 // xi = +-1/2; V = its area; CPDI1: s, t join its mid-edges); triangles: triPoints = 1
 // (centroid, V = A) or 3 (at 2/3, 1/6, 1/6, V = A/3), standard MPM only
+// one point at x of volume V; CPDI1/CPDI2: a square domain of that area about x (MPM: none)
+MaterialPoint cellPoint(const Vector2d& x, double V, const Params& P, double rho);
 void fillCells(std::vector<MaterialPoint>& mpData, const Mesh& mesh, const Params& P, double rho,
                int triPoints = 3);
 

@@ -27,6 +27,7 @@ namespace funnel     { Params params(); Analysis setupGrid(const Params&); Resul
 namespace annulus    { Params params(); Analysis setupGrid(const Params&); Results results(const Analysis&, const Params&); }
 namespace doughnut   { Params params(); Analysis setupGrid(const Params&); Results results(const Analysis&, const Params&); }
 namespace footing    { Params params(); Analysis setupGrid(const Params&); Results results(const Analysis&, const Params&); }
+namespace squeeze    { Params params(); Analysis setupGrid(const Params&); Results results(const Analysis&, const Params&); }
 
 const std::vector<Setup>& setupsTable() {
   static const std::vector<Setup> table = {
@@ -56,6 +57,8 @@ const std::vector<Setup>& setupsTable() {
        funnel::params, funnel::setupGrid, funnel::results},
       {"doughnut", "twist of a confined annulus on an annular quad mesh: MPM, CPDI1, CPDI2, FE mode (seed 001 sec 3.2)",
        doughnut::params, doughnut::setupGrid, doughnut::results},
+      {"squeeze", "elastic block squeezed from above, sides free: the worked setup of docs/new-setup.md",
+       squeeze::params, squeeze::setupGrid, squeeze::results},
   };
   return table;
 }
@@ -91,6 +94,9 @@ Params commonParams(int lstps) {
       Param("lstps", lstps).integer(1, 1e6).help("number of equal load steps"),
       Param("tol", 1e-9).above(0).below(1).help("Newton-Raphson tolerance on fErr (eq 35)"),
       Param("NRitMax", 10).integer(2, 1000).help("most Newton-Raphson passes per load step"),
+      Param("solver", 0).choice(0, {"LU", "LDLT"})
+          .help("sparse solver of Kt(fd,fd): LU = Eigen's SparseLU (COLAMD); LDLT = Eigen's "
+                "SimplicialLDLT (AMD) in every pass where Kt(fd,fd) is symmetric, else LU"),
       Param("substeps", 0).integer(0, 30)
           .help("remedy: halvings of a load step allowed when Newton fails (0 = the paper's algorithm)"),
       Param("ghost", 0).range(0, 1e3)

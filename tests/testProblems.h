@@ -7,6 +7,8 @@
 #include "setups/setupHelpers.h"
 #include "setups/setups.h"
 #include <doctest/doctest.h>
+#include <algorithm>
+#include <cmath>
 #include <fstream>
 #include <map>
 #include <sstream>
@@ -17,6 +19,24 @@ namespace ample::testing {
 
 // a setup run in memory (no files) through all its load steps, with some parameters set;
 // throws what solve throws when a step fails
+// closed-form Cauchy stress (xx, yy) of Hencky elasticity (lambda, mu from E, nu) under
+// the plane-strain stretch x = diag(lx, ly) X: sigma_i = (lam (e1 + e2) + 2 mu e_i) / J,
+// e_i = ln l_i, J = lx ly (the patch tests' reference; shear 0)
+inline Eigen::Vector2d henckyStretchStress(double lx, double ly, double E, double nu) {
+  const double lam = E * nu / ((1 + nu) * (1 - 2 * nu)), mu = E / (2 * (1 + nu));
+  const double e1 = std::log(lx), e2 = std::log(ly), J = lx * ly;
+  return Eigen::Vector2d((lam * (e1 + e2) + 2 * mu * e1) / J, (lam * (e1 + e2) + 2 * mu * e2) / J);
+}
+
+// the largest stress error of the points against that stretch, relative to its largest entry
+inline double stretchStressError(const std::vector<MaterialPoint>& mpData, const Eigen::Vector2d& sig) {
+  double d = 0;
+  for (const MaterialPoint& mp : mpData)
+    d = std::max(d, std::max({std::abs(mp.sig(0) - sig(0)), std::abs(mp.sig(1) - sig(1)), std::abs(mp.sig(3))}) /
+                        sig.cwiseAbs().maxCoeff());
+  return d;
+}
+
 inline Analysis runSetup(const std::string& name,
                          const std::vector<std::pair<std::string, double>>& set, RunLog& log) {
   const Setup* s = findSetup(name);

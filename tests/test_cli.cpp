@@ -158,6 +158,9 @@ TEST_SUITE("cli") {
     CHECK(runBinary("compaction E=-5 --out " + dir) == 2);
     CHECK(runBinary("nosuchsetup --out " + dir) == 2);
     CHECK(runBinary("compaction mp=1.5 --out " + dir) == 2);
+    CHECK(runBinary("doughnut mpType=2 --out " + dir) == 2);  // GIMP on a general mesh
+    CHECK(runBinary("annulus mpType=2 --out " + dir) == 2);
+    CHECK(runBinary("doughnut fem=1 mpType=4 --out " + dir) == 2);
     CHECK(!std::filesystem::exists(dir));
     CHECK(runBinary("--list") == 0);
     CHECK(runBinary("collapse --help") == 0);

@@ -87,4 +87,27 @@ TEST_SUITE("setups") {
       CHECK(low->sig(1) == doctest::Approx(ref.first == 4 ? -34292.95959097223 : -36902.54492098542).epsilon(1e-6).scale(0));
     }
   }
+
+  TEST_CASE("squeeze: every point carries the plane-strain uniaxial state, the top nodes its force") {
+    // E = 10 MPa, nu = 0.3, the top pushed down by 5 % (docs/new-setup.md). Hand values:
+    // sigma_yy = E eps / (1 - nu^2) = -5.4945e5 Pa, sigma_xx = sigma_xy = 0, sigma_zz = nu
+    // sigma_yy (plane strain), force on the top nodes = sigma_yy W (W = 1 m). Exact for GIMP and
+    // CPDI2 in one step, and for standard MPM in five (its points sample the linear field
+    // wherever they move; GIMP's top domains leave the line of pushed nodes: docs/new-setup.md)
+    const double sYY = 10e6 * -0.05 / (1 - 0.3 * 0.3);
+    for (auto set : std::vector<std::vector<std::pair<std::string, double>>>{
+             {}, {{"mpType", 4}}, {{"mpType", 1}, {"lstps", 5}}}) {
+      CAPTURE(set.size());
+      RunLog log;
+      const Analysis an = testing::runSetup("squeeze", set, log);
+      REQUIRE(log.converged);
+      REQUIRE(an.mpData.size() == 64);                         // 4 x 4 cells, 2 x 2 points each
+      for (const MaterialPoint& mp : an.mpData) {
+        CHECK(mp.sig(1) == doctest::Approx(sYY).epsilon(1e-12));
+        CHECK(mp.sig(2) == doctest::Approx(0.3 * sYY).epsilon(1e-12));
+        CHECK(std::abs(mp.sig(0)) + std::abs(mp.sig(3)) <= 1e-10 * std::abs(sYY));
+      }
+      CHECK(an.history.back()[2].second == doctest::Approx(sYY).epsilon(1e-12));
+    }
+  }
 }

@@ -1,0 +1,176 @@
+#!/usr/bin/env python3
+"""plot_run.py — a picture of one run of ample, from its output folder alone.
+
+Left:        the points of the last converged step (mp_final.csv), each its domain
+             (GIMP: 2 lp x 2 lp; otherwise a square of area V), coloured by FIELD
+             (default vonMises), over the background grid (mesh_<last>.vtk, or
+             mesh.vtk; none if the run wrote no VTK, --vtk 0).
+Right, top:  the convergence history (residuals.csv): fErr against the Newton-Raphson
+             pass, one line per load step (colour = load step), log scale, the tolerance dashed.
+Right, low:  the setup's history.csv if it writes one (e.g. load against displacement);
+             the columns drawn are chosen in HISTORY below or by --history.
+
+usage: plot_run.py OUTDIR [--field NAME] [--original] [--deformed-grid] [--out PNG]
+                   [--history X Y[,Y...]]
+  --field         one of: vonMises sxx syy szz sxy p ux uy u J  (default vonMises)
+  --original      points at their original positions X0 (and the first grid written, mesh.vtk)
+  --deformed-grid the grid of the last converged step moved by that step's nodal displacement
+                  increment (mesh_<lstp>.vtk: written with --vtk N when N divides that step)
+  --out           the PNG to write (default OUTDIR/run.png)
+  --history       history.csv columns: X against Y (several: Y1,Y2)
+e.g.   build/release/ample collapse --out output/collapse && plotting/plot_run.py output/collapse
+Tests: tests/plot_run_test.sh (CTest plot.run)
+"""
+import argparse
+import glob
+import math
+import os
+import re
+import sys
+import matplotlib
+matplotlib.use("Agg")
+import matplotlib.pyplot as plt
+from matplotlib.collections import LineCollection, PolyCollection
+from matplotlib.ticker import MaxNLocator
+from plot_history import draw_history
+from run_output import FIELDS, point_field, read_csv, read_mesh, read_summary
+
+# history.csv columns to draw per setup, where "second column against the rest" reads badly
+HISTORY = {
+    "beam": ("tip_v_over_l", ["load_factor"]),      # load against tip deflection
+    "footing": ("settlement", ["load_kN"]),
+    "funnel": ("push", ["load_kN"]),
+    "shear": ("gamma", ["sxy_mean", "sxy_reference"]),
+    "stretch": ("lstp", ["reaction", "reference"]),
+    "ibcantilever": ("load_factor", ["tip_v", "tip_v_beam"]),
+    "doughnut": ("alpha", ["fNorm"]),
+}
+
+
+def grid_file(outdir, step, first):
+    """the mesh VTK to draw: the grid of the last converged step, or the first one written"""
+    last = os.path.join(outdir, "mesh_%d.vtk" % step)
+    first = os.path.join(outdir, "mesh.vtk")
+    if not first and os.path.exists(last):
+        return last
+    if os.path.exists(first):
+        return first
+    steps = sorted(glob.glob(os.path.join(outdir, "mesh_*.vtk")),
+                   key=lambda p: int(re.findall(r"(\d+)\.vtk$", p)[0]))
+    return steps[-1] if steps else None
+
+
+def draw_points(ax, fig, outdir, summary, opt):
+    rows = read_csv(os.path.join(outdir, "mp_final.csv"))
+    step = summary["last_converged_step"]
+    path = grid_file(outdir, step, opt.original and not opt.deformed_grid)
+    if path:
+        nodes, cells, disp = read_mesh(path)
+        if opt.deformed_grid and disp:
+            nodes = [(x + u, y + v) for (x, y), (u, v) in zip(nodes, disp)]
+        edges = [[nodes[c[k]], nodes[c[(k + 1) % len(c)]]] for c in cells for k in range(len(c))]
+        ax.add_collection(LineCollection(edges, colors="0.75", linewidths=0.5, zorder=1))
+        ax.update_datalim(nodes)
+    else:
+        ax.text(0.01, 0.01, "no mesh VTK (run with --vtk N to draw the grid)",
+                transform=ax.transAxes, fontsize=8)
+    boxes, values = [], []
+    for r in rows:
+        x, y = (r["X0"], r["Y0"]) if opt.original else (r["x"], r["y"])
+        if r["lpx"] > 0 and r["lpy"] > 0 and not opt.original:
+            hx, hy = r["lpx"], r["lpy"]
+        else:
+            hx = hy = 0.5 * math.sqrt(r["V0"] if opt.original else r["V"])
+        boxes.append([(x - hx, y - hy), (x + hx, y - hy), (x + hx, y + hy), (x - hx, y + hy)])
+        values.append(point_field(r, opt.field))
+    lo, hi = min(values), max(values)
+    if hi - lo <= 1e-9 * max(abs(lo), abs(hi), 1e-300):  # a uniform field: a visible range around it
+        lo, hi = lo - 0.01 * abs(lo) - 1e-12, hi + 0.01 * abs(hi) + 1e-12
+    pc = PolyCollection(boxes, array=values, cmap="viridis", edgecolors="none", zorder=2)
+    pc.set_clim(lo, hi)
+    ax.add_collection(pc)
+    ax.update_datalim([p for b in boxes for p in b])
+    ax.autoscale_view()
+    (x0, x1), (y0, y1) = ax.get_xlim(), ax.get_ylim()
+    slender = not 1 / 6 < (y1 - y0) / (x1 - x0) < 6    # a column: to scale it is a line
+    ax.set_aspect("auto" if slender else "equal")
+    ax.set_xlabel("x (m)")
+    ax.set_ylabel("y (m)")
+    where = "original positions" if opt.original else "load step %d" % step
+    ax.set_title("%d points, %s%s" % (len(rows), where, " (axes not to scale)" if slender else ""),
+                 fontsize=10)
+    bar = fig.colorbar(pc, ax=ax, label=FIELDS[opt.field][1], shrink=0.8)
+    bar.formatter.set_useOffset(False)                 # values as they are, not 1e-8 + offset
+
+
+def draw_convergence(ax, fig, outdir, summary):
+    rows = [r for r in read_csv(os.path.join(outdir, "residuals.csv")) if r["fErr"] > 0]
+    steps = sorted({int(r["lstp"]) for r in rows})
+    cmap = plt.get_cmap("plasma")
+    for s in steps:
+        mine = [r for r in rows if int(r["lstp"]) == s]
+        c = cmap((s - steps[0]) / max(1, steps[-1] - steps[0]) * 0.9)
+        ax.semilogy([r["NRit"] for r in mine], [r["fErr"] for r in mine], "o-", ms=2.5, lw=0.8, color=c)
+    ax.axhline(summary["parameters"]["tol"], color="k", ls="--", lw=0.8, label="tol")
+    ax.xaxis.set_major_locator(MaxNLocator(integer=True))
+    ax.set_xlabel("Newton-Raphson pass NRit")
+    ax.set_ylabel("fErr (eq 35)")
+    ax.set_title("convergence, load steps %d-%d (dark to light)" % (steps[0], steps[-1])
+                 if steps else "convergence: no residuals", fontsize=10)
+    ax.grid(True, which="major", alpha=0.3)
+    ax.legend(fontsize=8)
+
+
+def draw_setup_history(ax, outdir, summary, opt):
+    path = os.path.join(outdir, "history.csv")
+    rows = read_csv(path)
+    cols = list(rows[0].keys())
+    if opt.history:
+        x, ys = opt.history[0], opt.history[1].split(",")
+    elif summary["setup"] in HISTORY:
+        x, ys = HISTORY[summary["setup"]]
+    else:
+        x, ys = cols[1], cols[2:]                      # lstp, x, then the y columns
+    missing = [c for c in [x] + ys if c not in cols]
+    if missing:
+        sys.exit("plot_run.py: history.csv has no column %s; its columns: %s"
+                 % (", ".join(missing), ", ".join(cols)))
+    draw_history(ax, [("", rows)], x, ys)
+    ax.set_title("history.csv: %s against %s" % (", ".join(ys), x), fontsize=10)
+
+
+def title_of(summary):
+    state = "converged" if summary["converged"] else "stopped: " + summary["message"][:60]
+    results = ", ".join("%s = %.4g" % kv for kv in list(summary["results"].items())[:3])
+    return "%s — load step %d of %d, %s\n%s" % (summary["setup"], summary["last_converged_step"],
+                                                summary["lstps"], state, results)
+
+
+def main(argv):
+    ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    ap.add_argument("outdir")
+    ap.add_argument("--field", default="vonMises", choices=sorted(FIELDS))
+    ap.add_argument("--original", action="store_true")
+    ap.add_argument("--deformed-grid", action="store_true")
+    ap.add_argument("--out")
+    ap.add_argument("--history", nargs=2, metavar=("X", "Y"))
+    opt = ap.parse_args(argv)
+    if not os.path.exists(os.path.join(opt.outdir, "summary.json")):
+        sys.exit("plot_run.py: %s has no summary.json: not the output folder of a run" % opt.outdir)
+    summary = read_summary(opt.outdir)
+    has_history = os.path.exists(os.path.join(opt.outdir, "history.csv"))
+    fig = plt.figure(figsize=(12, 5.2))
+    gs = fig.add_gridspec(2, 2, width_ratios=[1.7, 1])
+    draw_points(fig.add_subplot(gs[:, 0]), fig, opt.outdir, summary, opt)
+    draw_convergence(fig.add_subplot(gs[0, 1] if has_history else gs[:, 1]), fig, opt.outdir, summary)
+    if has_history:
+        draw_setup_history(fig.add_subplot(gs[1, 1]), opt.outdir, summary, opt)
+    fig.suptitle(title_of(summary), fontsize=11)
+    fig.tight_layout()
+    out = opt.out or os.path.join(opt.outdir, "run.png")
+    fig.savefig(out, dpi=100)
+    print(out)
+
+
+if __name__ == "__main__":
+    main(sys.argv[1:])

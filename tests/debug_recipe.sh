@@ -1,0 +1,104 @@
+#!/usr/bin/env bash
+#--------------------------------------------------------------------------
+# debug_recipe.sh — the README's debugger recipes, run as written (CTest debug.readme)
+#--------------------------------------------------------------------------
+# Reads the section "Stepping through in a debugger" of README.md: each command
+# line that starts gdb (`tools/debug.sh ...` or `gdb ...`) and the `(gdb) ...`
+# lines of the block after it. Runs each in gdb's batch mode (debug.sh: the
+# first one builds the Debug program, the others --no-build; gdb: -batch -nx
+# added), and checks the output:
+#   - the breakpoint is hit and the program has not ended before the commands;
+#   - no gdb error (no symbol, no frame, undefined command, Python exception);
+#   - every print gives a value, in the form our printers promise:
+#       p ....F       [3x3] {{n, n, n}, {n, n, n}, {n, n, n}}
+#       p uvw         [N] {n, n, ...
+#       p mp, p mpData[k], point   a point whose F, sig, epsE are such matrices
+#       p ....sig, p epsEtr        [6] {six numbers}
+#       pmat X        "X = [RxC]" then R rows of C numbers
+#       finish        "Value returned is"
+#   - and the stated values of the first stop of the first recipe (compaction,
+#     first pass: nothing has moved): mp.F = I, uvw all zero.
+# Skips (exit 77) when gdb is not installed, and in the student copy (docs/exercises.md).
+# Usage: tests/debug_recipe.sh   (from anywhere; works in the source tree)
+#--------------------------------------------------------------------------
+set -uo pipefail
+root="$(cd "$(dirname "$0")/.." && pwd)"
+cd "$root"
+command -v gdb > /dev/null || { echo "SKIPPED: gdb is not installed (apt-get install gdb)"; exit 77; }
+[ -f STUDENT.md ] && { echo "SKIPPED: the student copy (STUDENT.md): the recipes step through the solved program (docs/exercises.md)"; exit 77; }
+
+num='-?(nan|inf|[0-9.]+(e[-+]?[0-9]+)?)'
+mat3="\[3x3\] \{\{$num, $num, $num\}, \{$num, $num, $num\}, \{$num, $num, $num\}\}"
+vec6="\[6\] \{$num, $num, $num, $num, $num, $num\}"
+fails=0
+fail() { echo "FAIL: $*"; fails=$((fails + 1)); }
+
+# the section, then recipes as "COMMAND<TAB>gdb line<TAB>gdb line ..."
+section=$(awk '/^## Stepping through in a debugger/ {on = 1; next} /^## / {on = 0} on' README.md)
+recipes=$(awk -F'\n' '
+  /^(tools\/debug\.sh|gdb) / { if (cmd != "") print cmd; cmd = $0; sub(/[ ]+#.*$/, "", cmd); next }
+  /^\(gdb\) / { line = substr($0, 7); sub(/[ ]+#.*$/, "", line); cmd = cmd "\t" line }
+  END { if (cmd != "") print cmd }' <<< "$section")
+[ -n "$recipes" ] || { echo "FAIL: no recipe found in README.md"; exit 1; }
+
+n=0 built=0
+while IFS=$'\t' read -r -u 3 -a parts; do
+  n=$((n + 1))
+  cmd="${parts[0]}"
+  cmds=("${parts[@]:1}")
+  [ ${#cmds[@]} -gt 0 ] || { fail "recipe $n ($cmd) has no (gdb) lines"; continue; }
+  read -r -a words <<< "$cmd"
+  ex=()
+  if [ "${words[0]}" = tools/debug.sh ]; then
+    for c in "${cmds[@]}"; do ex+=(--ex "$c"); done
+    [ "$built" = 1 ] && ex+=(--no-build)                 # the first one builds
+    out=$("${words[@]}" "${ex[@]}" < /dev/null 2>&1)
+    built=1
+  else
+    for c in "${cmds[@]}"; do ex+=(-ex "$c"); done
+    opts=() prog=()                                      # gdb runs -x and -ex in their order:
+    for w in "${words[@]:1}"; do                         # the README's options first
+      if [ ${#prog[@]} -gt 0 ] || [ "$w" = --args ]; then prog+=("$w"); else opts+=("$w"); fi
+    done
+    out=$(gdb -batch -nx "${opts[@]}" "${ex[@]}" "${prog[@]}" < /dev/null 2>&1)
+  fi
+  echo "== recipe $n: $cmd"
+  echo "$out" | sed 's/^/   /' | head -200
+
+  grep -q "^Breakpoint 1, " <<< "$out" || fail "recipe $n: the breakpoint was not hit"
+  grep -Eq "exited normally|exited with code" <<< "$out" && fail "recipe $n: the program ended"
+  grep -Eq "No symbol|No frame|Undefined command|There is no member|Python Exception|Cannot access|not defined in" \
+    <<< "$out" && fail "recipe $n: gdb reported an error (above)"
+  prints=0
+  for c in "${cmds[@]}"; do
+    case "$c" in
+      p\ *|print\ *) prints=$((prints + 1)); e="${c#* }"
+        case "$e" in
+          *.F) grep -Eq "^\\\$[0-9]+ = $mat3\$" <<< "$out" || fail "recipe $n: '$c' is not a 3x3 matrix" ;;
+          uvw) grep -Eq "^\\\$[0-9]+ = \[[0-9]+\] \{$num, $num" <<< "$out" || fail "recipe $n: '$c' shows no entries" ;;
+          *.sig|epsEtr) grep -Eq "^\\\$[0-9]+ = $vec6\$" <<< "$out" || fail "recipe $n: '$c' is not a 6-vector" ;;
+          mp|mpData\[*\]) for m in "F = $mat3" "sig = $vec6" "epsE = $vec6"; do
+                            grep -Eq "(^ *|[{ ])$m(,|\$|\})" <<< "$out" || fail "recipe $n: '$c' has no '${m%% *}' as a matrix"
+                          done ;;
+        esac ;;
+      point) prints=$((prints + 1))
+             grep -Eq "^point [0-9]+ of [0-9]+ in mpData" <<< "$out" || fail "recipe $n: 'point' names no point"
+             grep -Eq "^ *F = $mat3,?\$" <<< "$out" || fail "recipe $n: 'point' shows no F" ;;
+      pmat\ *) e="${c#pmat }"
+               rows=$(grep -F -A8 "$e = [" <<< "$out" | grep -cE "^  +$num( +$num)*\$")
+               [ "$rows" -ge 2 ] || fail "recipe $n: '$c' printed no rows" ;;
+      finish) grep -q "Value returned is" <<< "$out" || fail "recipe $n: 'finish' returned no value" ;;
+    esac
+  done
+  got=$(grep -cE '^\$[0-9]+ = ' <<< "$out")
+  [ "$got" -ge "$prints" ] || fail "recipe $n: $prints prints, $got values"
+  if [ "$n" = 1 ]; then                                  # the stated values of the first stop
+    grep -Eq '^\$[0-9]+ = \[3x3\] \{\{1, 0, 0\}, \{0, 1, 0\}, \{0, 0, 1\}\}$' <<< "$out" ||
+      fail "recipe 1: mp.F at the first stop is not [3x3] {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}}"
+    grep -Eq '^\$[0-9]+ = \[[0-9]+\] \{0, 0, 0, 0, 0, 0, 0, 0, 0, 0, \.\.\. \([0-9]+ more\)\}$' <<< "$out" ||
+      fail "recipe 1: uvw at the first stop is not all zero"
+  fi
+done 3<<< "$recipes"
+
+[ "$fails" = 0 ] || { echo "$fails check(s) failed"; exit 1; }
+echo "debug recipes: $n run, every check passed"
