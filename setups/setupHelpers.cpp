@@ -9,6 +9,8 @@
 #include "ample/shapefunc.h"
 #include <algorithm>
 #include <cmath>
+#include <fstream>
+#include <sstream>
 #include <string>
 
 namespace ample {
@@ -63,10 +65,35 @@ void forBlockPoints(const Vector2d& corner, int nelsx, int nelsy, const Vector2d
 }
 }  // namespace
 
+// bytes this machine can still give (MemAvailable of /proc/meminfo; 0 when unknown)
+static double availableBytes() {
+  std::ifstream in("/proc/meminfo");
+  std::string key;
+  double kB = 0;
+  while (in >> key >> kB)
+    if (key == "MemAvailable:") return kB * 1024;
+    else in.ignore(256, '\n');
+  return 0;
+}
+
+void checkPointMemory(size_t points) {
+  const double need = double(points) * 2 * sizeof(MaterialPoint), have = availableBytes();
+  if (have > 0 && need > have) {
+    std::ostringstream msg;
+    msg.precision(3);
+    msg << "the run would need at least " << need / (1 << 30) << " GiB for its " << points
+        << " material points (" << 2 * sizeof(MaterialPoint) << " bytes each with the converged copy"
+        << ", before the stiffness and its factors), more than the " << have / (1 << 30)
+        << " GiB this machine has available: use fewer points (mp, a, nelsy, h)";
+    throw InputError(msg.str());
+  }
+}
+
 void fillBlock(std::vector<MaterialPoint>& mpData, const Vector2d& corner, int nelsx, int nelsy,
                const Vector2d& h, const Params& P, double rho) {
   const int mp = int(get(P, "mp"));
   const size_t n = mpData.size() + size_t(nelsx) * nelsy * mp * mp;
+  checkPointMemory(n);
   if (n > mpData.capacity()) mpData.reserve(std::max(n, 2 * mpData.capacity()));  // amortised
   forBlockPoints(corner, nelsx, nelsy, h, mp, [&](const Vector2d& x, const Vector2d& lp0) {
     mpData.push_back(blockPoint(x, lp0, P, rho));
@@ -102,6 +129,7 @@ void fillCells(std::vector<MaterialPoint>& mpData, const Mesh& mesh, const Param
   if (mesh.regular()) throw InputError("fillCells: a general mesh (generalMesh) is needed");
   if (type == MpType::GIMP) throw InputError("mpType=2 (GIMP) needs the regular grid");
   if (triPoints != 1 && triPoints != 3) throw InputError("fillCells: triPoints 1 or 3");
+  checkPointMemory(mpData.size() + size_t(mesh.nels()) * 4);
   for (int e = 0; e < mesh.nels(); ++e) {
     Eigen::Matrix<double, 2, 4> X = Eigen::Matrix<double, 2, 4>::Zero();
     for (int a = 0; a < mesh.cellNodes(); ++a) X.col(a) = mesh.coord.row(mesh.etpl(e, a)).transpose();
@@ -227,6 +255,7 @@ void fillPolygon(std::vector<MaterialPoint>& mpData, const Vector2d& corner, int
                  const Polygon& solid) {
   constexpr double full = 1.0 - 1e-12, none = 1e-12;  // fractions of the domain inside
   const int mp = int(get(P, "mp"));
+  checkPointMemory(mpData.size() + size_t(nelsx) * nelsy * mp * mp);  // at most
   forBlockPoints(corner, nelsx, nelsy, h, mp, [&](const Vector2d& x, const Vector2d& lp0) {
     Polygon local = solid;  // the solid about the point: the area keeps its digits
     for (Vector2d& p : local) p -= x;

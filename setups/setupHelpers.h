@@ -35,6 +35,9 @@ namespace ample {
 // formulation, domainUpdate (g is set by the setups that have gravity)
 Analysis baseAnalysis(const Params& P);
 
+// InputError before any work when `points` material points (2 x sizeof(MaterialPoint) each:
+// the point and its converged copy) exceed the memory this machine has available
+void checkPointMemory(size_t points);
 void fillBlock(std::vector<MaterialPoint>& mpData, const Vector2d& corner, int nelsx, int nelsy,
                const Vector2d& h, const Params& P, double rho);
 

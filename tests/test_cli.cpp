@@ -161,6 +161,7 @@ TEST_SUITE("cli") {
     CHECK(runBinary("doughnut mpType=2 --out " + dir) == 2);  // GIMP on a general mesh
     CHECK(runBinary("annulus mpType=2 --out " + dir) == 2);
     CHECK(runBinary("doughnut fem=1 mpType=4 --out " + dir) == 2);
+    CHECK(runBinary("compaction nelsy=4194304 mp=20 --out " + dir) == 2);  // 1.7e9 points: 3.6 TB
     CHECK(!std::filesystem::exists(dir));
     CHECK(runBinary("--list") == 0);
     CHECK(runBinary("collapse --help") == 0);
