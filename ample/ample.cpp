@@ -85,7 +85,8 @@ void solve(Analysis& an, RunLog& log, const RunOptions& opt) {
   Timers& T = log.t;
   const int nDoF = mesh.nDoF();
   LoadSteps loadSteps(an.lstps, an.substeps, opt.lastStep);          // lstp = 1 .. lstps
-  FreeSystem Kff{an.solver};                                         // Kt(fd,fd), analysed once
+  FreeSystem Kff;                                                    // Kt(fd,fd), analysed once
+  Kff.choice = an.solver;                                            // SparseLU, or LDLT if symmetric
   for (Increment inc; loadSteps.next(inc);) {                        // load steps
     const int lstp = inc.lstp;
     if (inc.first) startStep(an, lstp, log, opt.quiet);              // progress, setup's hook

@@ -93,7 +93,8 @@ TEST_SUITE("linSolve") {
   TEST_CASE("linSolve: solver=LDLT solves the symmetric chain as LU does; an unsymmetric Kff falls back to LU") {
     Eigen::VectorXd oobf(5);
     oobf << 0.7, 0.5, -1.0, 0.25, 2.0;
-    FreeSystem lu, ldlt{LinearSolver::LDLT};
+    FreeSystem lu, ldlt;
+    ldlt.choice = LinearSolver::LDLT;
     const LinSolveOut a = linSolve({{0, 0.1}}, chain(), oobf, 1, {1, 2, 3, 4}, &lu);
     const LinSolveOut b = linSolve({{0, 0.1}}, chain(), oobf, 1, {1, 2, 3, 4}, &ldlt);
     CHECK((a.duvw - b.duvw).norm() <= 1e-14 * a.duvw.norm());
