@@ -12,6 +12,11 @@
 #include "formULstiff.h"
 #include "stiffnessPattern.h"
 #include "tensorOps.h"
+#include <algorithm>
+#include <exception>
+#ifdef _OPENMP
+#include <omp.h>
+#endif
 
 namespace ample {
 
@@ -41,11 +46,13 @@ ConstOut constitutive(const Vector6d& epsEtr, const MaterialPoint& mp) {  // cmT
 // finiteStrainPoint — UL (seed 002 eqs 5-18) or PC (seed 000 eqs 18-23)
 //--------------------------------------------------------------------------
 // Logarithmic elastic strain, Kirchhoff stress tau, sigma = tau / det(F).
-// Writes mp.F, mp.epsE, mp.sig (trial values until the step converges).
+// bEn = exp(2 eps_e,n) (eq 9) is that of the start of the step: elasticLeftCG
+// computes it once per load step. Writes mp.F, mp.epsE, mp.sig (trial values
+// until the step converges).
 //--------------------------------------------------------------------------
-PointTerms finiteStrainPoint(const Matrix3d& dF, Formulation form, MaterialPoint& mp) {
+PointTerms finiteStrainPoint(const Matrix3d& dF, const Matrix3d& bEn, Formulation form,
+                             MaterialPoint& mp) {                // bEn = exp(2 eps_e,n), eq 9
   mp.F = dF * mp.Fn;                                            // eq 7
-  const Matrix3d bEn = symExp(2.0 * strainToTensor(mp.epsEn));  // eq 9
   const Matrix3d BeT = dF * bEn * dF.transpose();               // eq 8
   const Vector6d epsEtr = tensorToStrain(0.5 * symLog(BeT));    // eq 10
 
@@ -97,42 +104,129 @@ PointTerms smallStrainPoint(const Matrix3d& H, MaterialPoint& mp) {  // H = grad
   return t;
 }
 
+//--------------------------------------------------------------------------
+// addPoint — f_p (eq 16) and k_p (eq 14) of one point, added into fint and the
+// values Kval of Kt's pattern (eqs 30-31)
+//--------------------------------------------------------------------------
+// k_ab,ik = sum_jl dS_a/dx_j A_ijkl dS_b/dx_l V_p (eq 14) with the products
+// g_jkl = dS_a/dx_j A_ijkl formed once per node a and direction i, not per b: half
+// the multiplications, the same sums in the same order (bit for bit). Summing over
+// j first (12 nn^2 flops) changes the round-off, enough to move where marginal runs stop.
+// bEn: exp(2 eps_e,n) of this point (UL, PC; unused for SS).
+//--------------------------------------------------------------------------
+void addPoint(const Eigen::VectorXd& uvw, const Matrix3d& bEn, Formulation form, MaterialPoint& mp,
+              const SpMat& pattern, bool blocked, Eigen::VectorXd& fint, double* Kval) {
+  const PointTerms t =
+      (form == Formulation::SS)
+          ? smallStrainPoint(plusGradDu(Matrix3d::Zero(), uvw, mp), mp)                   // grad du
+          : finiteStrainPoint(plusGradDu(Matrix3d::Identity(), uvw, mp), bEn, form, mp);  // dF, eq 17
+
+  int d[nD * MAXN];                                             // the point's dofs, ascending
+  for (int a = 0; a < mp.nn; ++a)
+    for (int i = 0; i < nD; ++i) d[nD * a + i] = dof(mp.nIN[a], i);
+  const int ne = nD * mp.nn;
+  Eigen::Matrix<double, nD * MAXN, nD * MAXN> ke;               // eq 14
+  // BEGIN EXERCISE detMPs
+  for (int a = 0; a < mp.nn; ++a)
+    for (int i = 0; i < nD; ++i) {
+      double fa = 0.0;                                          // eq 16
+      for (int j = 0; j < nD; ++j) fa += t.dSx(j, a) * t.Sf(i, j);
+      fint(d[nD * a + i]) += fa * t.Vp;
+      double g[nD][nD][nD];                                     // g_jkl = dS_a/dx_j A_ijkl, once per a, i
+      for (int j = 0; j < nD; ++j)
+        for (int k = 0; k < nD; ++k)
+          for (int l = 0; l < nD; ++l) g[j][k][l] = t.dSx(j, a) * t.A(2 * i + j, 2 * k + l);
+      for (int b = 0; b < mp.nn; ++b)                           // eq 14
+        for (int k = 0; k < nD; ++k) {
+          double kab = 0.0;
+          for (int j = 0; j < nD; ++j)
+            for (int l = 0; l < nD; ++l) kab += g[j][k][l] * t.dSx(l, b);
+          ke(nD * a + i, nD * b + k) = kab * t.Vp;
+        }
+    }
+  // END EXERCISE
+  if (blocked)
+    addNodeBlocks(pattern, Kval, mp.nIN.data(), mp.nn, ke.topLeftCorner(ne, ne));  // eq 30
+  else
+    addToPattern(pattern, Kval, d, ne, ke.topLeftCorner(ne, ne));
+}
+
+// threads for the point loop: 1 without OpenMP, or for fewer than 2048 points a
+// thread (small runs stay serial, bit for bit); else OMP_NUM_THREADS or the cores
+int pointThreads(int np) {
+#ifdef _OPENMP
+  return std::max(1, std::min(omp_get_max_threads(), np / 2048));
+#else
+  (void)np;
+  return 1;
+#endif
+}
+
+int threadId() {
+#ifdef _OPENMP
+  return omp_get_thread_num();
+#else
+  return 0;
+#endif
+}
+
 }  // namespace
+
+// exp(2 eps_e,n) of every point (eq 9): it does not change within a load step
+std::vector<Matrix3d> elasticLeftCG(const std::vector<MaterialPoint>& mpData) {
+  std::vector<Matrix3d> bEn(mpData.size());
+  for (size_t p = 0; p < mpData.size(); ++p) bEn[p] = symExp(2.0 * strainToTensor(mpData[p].epsEn));
+  return bEn;
+}
 
 void detMPs(const Eigen::VectorXd& uvw, std::vector<MaterialPoint>& mpData, Formulation form,
             DetMPsOut& out) {
-  const int nDoF = int(uvw.size());
+  const int nDoF = int(uvw.size()), np = int(mpData.size());
   if (out.Kt.rows() != nDoF || out.Kt.nonZeros() == 0) out.Kt = stiffnessPattern(nDoF, mpData);
+  if (form != Formulation::SS && int(out.bEn.size()) != np) out.bEn = elasticLeftCG(mpData);
+  if (out.blockedNnz != out.Kt.nonZeros()) {                    // a new pattern (or one grown by
+    out.blocked = nodeBlocked(out.Kt);                          // the ghost penalty / IB terms)
+    out.blockedNnz = out.Kt.nonZeros();
+  }
   out.fint.setZero(nDoF);
   out.Kt.coeffs().setZero();                                    // the pattern's values only
-
-  for (MaterialPoint& mp : mpData) {
-    const PointTerms t =
-        (form == Formulation::SS)
-            ? smallStrainPoint(plusGradDu(Matrix3d::Zero(), uvw, mp), mp)              // grad du
-            : finiteStrainPoint(plusGradDu(Matrix3d::Identity(), uvw, mp), form, mp);  // dF, eq 17
-
-    int d[nD * MAXN];                                             // the point's dofs, ascending
-    for (int a = 0; a < mp.nn; ++a)
-      for (int i = 0; i < nD; ++i) d[nD * a + i] = dof(mp.nIN[a], i);
-    const int ne = nD * mp.nn;
-    Eigen::Matrix<double, nD * MAXN, nD * MAXN> ke;               // eq 14
-    // BEGIN EXERCISE detMPs
-    for (int a = 0; a < mp.nn; ++a)
-      for (int i = 0; i < nD; ++i) {
-        double fa = 0.0;                                          // eq 16
-        for (int j = 0; j < nD; ++j) fa += t.dSx(j, a) * t.Sf(i, j);
-        out.fint(d[nD * a + i]) += fa * t.Vp;
-        for (int b = 0; b < mp.nn; ++b)
-          for (int k = 0; k < nD; ++k) {
-            double kab = 0.0;
-            for (int j = 0; j < nD; ++j)
-              for (int l = 0; l < nD; ++l) kab += t.dSx(j, a) * t.A(2 * i + j, 2 * k + l) * t.dSx(l, b);
-            ke(nD * a + i, nD * b + k) = kab * t.Vp;
-          }
-      }
-    // END EXERCISE
-    addToPattern(out.Kt, d, ne, ke.topLeftCorner(ne, ne));      // eq 30
+  static const Matrix3d none = Matrix3d::Identity();            // SS: no bEn
+  const int nt = pointThreads(np);
+  if (nt == 1) {                                                // the point loop
+    for (int p = 0; p < np; ++p)
+      addPoint(uvw, out.bEn.empty() ? none : out.bEn[p], form, mpData[p], out.Kt, out.blocked,
+               out.fint, out.Kt.valuePtr());
+    return;
+  }
+  // the same loop on nt threads (AMPLE_OPENMP): thread t takes the points
+  // [np t / nt, np (t+1) / nt) and adds into its own fint and Kt values (thread 0:
+  // out's); summed in thread order after the loop: no races, and the same sums in
+  // every run with the same number of threads
+  out.part.resize(nt - 1);
+  std::vector<std::exception_ptr> failed(nt);                  // a point that threw, per thread
+#pragma omp parallel num_threads(nt)
+  {
+    const int t = threadId();
+    Eigen::VectorXd& fint = t == 0 ? out.fint : out.part[t - 1].fint;
+    if (t > 0) {
+      out.part[t - 1].fint.setZero(nDoF);
+      out.part[t - 1].Kval.assign(out.Kt.nonZeros(), 0.0);
+    }
+    double* Kval = t == 0 ? out.Kt.valuePtr() : out.part[t - 1].Kval.data();
+    try {
+      for (int p = int(long(np) * t / nt); p < int(long(np) * (t + 1) / nt); ++p)
+        addPoint(uvw, out.bEn.empty() ? none : out.bEn[p], form, mpData[p], out.Kt, out.blocked,
+                 fint, Kval);
+    } catch (...) {
+      failed[t] = std::current_exception();
+    }
+  }
+  for (const std::exception_ptr& e : failed)
+    if (e) std::rethrow_exception(e);                          // the first share's first failure
+  for (const DetMPsOut::Part& part : out.part) {
+    out.fint += part.fint;
+    Eigen::Map<Eigen::VectorXd>(out.Kt.valuePtr(), out.Kt.nonZeros()) +=
+        Eigen::Map<const Eigen::VectorXd>(part.Kval.data(), part.Kval.size());
   }
 }
 

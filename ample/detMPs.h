@@ -26,6 +26,11 @@
 // and only has its values refilled, in place (an Eigen 3.4 SparseMatrix has
 // no move constructor: a result returned by value would copy it every pass).
 // An empty Kt gets its pattern here. The second form returns a fresh result.
+// Also kept for the step: exp(2 eps_e,n) of each point (eq 9, out.bEn) and
+// whether Kt's pattern is node-blocked (then addNodeBlocks assembles).
+// With OpenMP (CMake option AMPLE_OPENMP) and at least 2048 points per thread
+// the point loop runs on OMP_NUM_THREADS threads, each adding into its own
+// fint and Kt values, summed in thread order: deterministic for a thread count.
 // Inputs:  uvw (nDoF) displacement increment of the step · mpData · form ·
 //          out (in place: Kt with the step's pattern, or empty)
 // Outputs: out.fint (nDoF) · out.Kt (nDoF x nDoF) · mpData (F, sig, epsE) updated
@@ -38,9 +43,21 @@
 namespace ample {
 
 struct DetMPsOut {
-  Eigen::VectorXd fint;  // nodal internal forces
-  SpMat Kt;              // global tangent stiffness
+  Eigen::VectorXd fint;          // nodal internal forces
+  SpMat Kt;                      // global tangent stiffness
+  // kept for the load step (the main loop's DetMPsOut lives for one step):
+  std::vector<Matrix3d> bEn;     // exp(2 eps_e,n) of each point (eq 9; UL, PC)
+  bool blocked = false;          // Kt's pattern is node-blocked (addNodeBlocks)
+  long blockedNnz = -1;          // the pattern size that was checked
+  struct Part {                  // OpenMP: thread t > 0 adds into part[t - 1]
+    Eigen::VectorXd fint;
+    std::vector<double> Kval;    // the values of Kt's pattern
+  };
+  std::vector<Part> part;
 };
+
+// exp(2 eps_e,n) of every point (eq 9), once per load step
+std::vector<Matrix3d> elasticLeftCG(const std::vector<MaterialPoint>& mpData);
 
 void detMPs(const Eigen::VectorXd& uvw, std::vector<MaterialPoint>& mpData, Formulation form,
             DetMPsOut& out);

@@ -36,16 +36,54 @@ SpMat stiffnessPattern(int nDoF, const std::vector<MaterialPoint>& mpData) {
 }
 
 // Kt's pattern already holds the entries of ke: walk each column once from the
-// point's first dof instead of searching for every entry
-void addToPattern(SpMat& Kt, const int* d, int n, const Eigen::Ref<const Eigen::MatrixXd>& ke) {
+// point's first dof instead of searching for every entry (any pattern, any dofs)
+void addToPattern(const SpMat& Kt, double* val, const int* d, int n,
+                  const Eigen::Ref<const Eigen::MatrixXd>& ke) {
   const int* inner = Kt.innerIndexPtr();
-  double* val = Kt.valuePtr();
   for (int q = 0; q < n; ++q) {
     int pos = int(std::lower_bound(inner + Kt.outerIndexPtr()[d[q]],
                                    inner + Kt.outerIndexPtr()[d[q] + 1], d[0]) - inner);
     for (int p = 0; p < n; ++p) {
       while (inner[pos] < d[p]) ++pos;
       val[pos] += ke(p, q);
+    }
+  }
+}
+
+// every node pair of the pattern is a full 2 x 2 block, and the two columns of a
+// node have the same rows (true for stiffnessPattern's; a grown pattern is checked)
+bool nodeBlocked(const SpMat& Kt) {
+  const int* outer = Kt.outerIndexPtr();
+  const int* inner = Kt.innerIndexPtr();
+  if (Kt.rows() % nD != 0 || Kt.cols() % nD != 0 || !Kt.isCompressed()) return false;
+  for (int c = 0; c < Kt.cols(); c += nD) {
+    const int len = outer[c + 1] - outer[c];
+    if (outer[c + 2] - outer[c + 1] != len || len % nD != 0) return false;
+    for (int e = outer[c]; e < outer[c + 1]; e += nD)
+      if (inner[e] % nD != 0 || inner[e + 1] != inner[e] + 1 || inner[e + len] != inner[e] ||
+          inner[e + len + 1] != inner[e] + 1)
+        return false;
+  }
+  return true;
+}
+
+// a node-blocked pattern: one search per node column b, then a walk by node
+// pairs; the 2 x 2 block of nodes (a, b) sits at pos, pos + 1 (column x of b)
+// and pos + len, pos + len + 1 (column y of b)
+void addNodeBlocks(const SpMat& Kt, double* val, const int* nIN, int nn,
+                   const Eigen::Ref<const Eigen::MatrixXd>& ke) {
+  static_assert(nD == 2, "the 2 x 2 node blocks");
+  const int* outer = Kt.outerIndexPtr();
+  const int* inner = Kt.innerIndexPtr();
+  for (int b = 0; b < nn; ++b) {
+    const int cx = dof(nIN[b], 0), len = outer[cx + 1] - outer[cx];
+    int pos = int(std::lower_bound(inner + outer[cx], inner + outer[cx + 1], dof(nIN[0], 0)) - inner);
+    for (int a = 0; a < nn; ++a) {
+      while (inner[pos] < dof(nIN[a], 0)) pos += nD;
+      val[pos] += ke(2 * a, 2 * b);
+      val[pos + 1] += ke(2 * a + 1, 2 * b);
+      val[pos + len] += ke(2 * a, 2 * b + 1);
+      val[pos + len + 1] += ke(2 * a + 1, 2 * b + 1);
     }
   }
 }

@@ -8,6 +8,10 @@
 #include "testProblems.h"
 #include <doctest/doctest.h>
 #include <cmath>
+#include <random>
+#ifdef _OPENMP
+#include <omp.h>
+#endif
 
 using namespace ample;
 
@@ -86,7 +90,98 @@ TEST_SUITE("detMPs") {
   }
 }
 
+TEST_SUITE("detMPs") {
+  // 4,096 GIMP points (16 x 16 cells, 4 x 4 each), plastic, prestrained: two threads' shares
+  Analysis largeBlock() {
+    Params P = commonParams(1);
+    for (auto kv : std::vector<std::pair<const char*, double>>{
+             {"mp", 4}, {"mpType", 2}, {"cmType", 2}, {"E", 1e6}, {"nu", 0.3}, {"rhoY", 2e3}})
+      setDefault(P, kv.first, kv.second);
+    Analysis an;
+    an.mesh = formCoord2D(20, 20, 20.0, 20.0);
+    fillBlock(an.mpData, Vector2d(2, 2), 16, 16, an.mesh.h, P, 1000.0);
+    testing::prestrain(an.mpData, 3);
+    elemMPinfo(an.mesh, an.mpData);
+    return an;
+  }
+
+  TEST_CASE("detMPs: the point loop on two threads equals the serial loop to 1e-12 and repeats bit for bit") {
+#ifndef _OPENMP
+    MESSAGE("built without AMPLE_OPENMP: the point loop is serial, nothing to compare");
+#else
+    Analysis an = largeBlock();
+    REQUIRE(an.mpData.size() == 4096);
+    const Eigen::VectorXd uvw = testing::randomUvw(an, 0.05, 5);
+    const int before = omp_get_max_threads();
+    std::vector<DetMPsOut> out(3);
+    for (int run = 0; run < 3; ++run) {               // serial, then two threaded runs
+      omp_set_num_threads(run == 0 ? 1 : 2);
+      std::vector<MaterialPoint> mps = an.mpData;
+      detMPs(uvw, mps, Formulation::UL, out[run]);
+    }
+    omp_set_num_threads(before);
+    const double dK = (out[1].Kt - out[0].Kt).norm() / out[0].Kt.norm();
+    const double df = (out[1].fint - out[0].fint).norm() / out[0].fint.norm();
+    CHECK(dK <= 1e-12);
+    CHECK(df <= 1e-12);
+    CHECK(out[1].part.size() == 1);                   // it did run on two threads
+    CHECK((out[2].Kt - out[1].Kt).norm() == 0.0);     // deterministic for a thread count
+    CHECK((out[2].fint - out[1].fint).norm() == 0.0);
+#endif
+  }
+
+  TEST_CASE("detMPs: a pattern grown beyond node blocks (ghost penalty, IB terms) is assembled by the general walk, to the same values") {
+    Analysis an = largeBlock();
+    const Eigen::VectorXd uvw = testing::randomUvw(an, 0.05, 6);
+    DetMPsOut plain, grown;
+    std::vector<MaterialPoint> a = an.mpData, b = an.mpData;
+    detMPs(uvw, a, Formulation::UL, plain);
+    CHECK(plain.blocked);
+    const int n = an.mesh.nDoF();
+    SpMat extra(n, n);                                // one x-x coupling of two far nodes only
+    extra.insert(0, n - 2) = 0.0;
+    extra.insert(n - 2, 0) = 0.0;
+    grown.Kt = stiffnessPattern(n, an.mpData) + extra;
+    detMPs(uvw, b, Formulation::UL, grown);
+    CHECK_FALSE(grown.blocked);
+    CHECK((Eigen::MatrixXd(grown.Kt) - Eigen::MatrixXd(plain.Kt)).norm() == 0.0);
+    CHECK((grown.fint - plain.fint).norm() == 0.0);
+  }
+}
+
 TEST_SUITE("stiffnessPattern") {
+  TEST_CASE("addNodeBlocks: the node-pair walk adds a point stiffness exactly as addToPattern does") {
+    Analysis an = testing::smallBlock(MpType::GIMP, CmType::Elastic, 3);
+    for (MaterialPoint& mp : an.mpData) mp.mpC += Vector2d(0.13, -0.07);
+    elemMPinfo(an.mesh, an.mpData);
+    const SpMat K = stiffnessPattern(an.mesh.nDoF(), an.mpData);
+    CHECK(nodeBlocked(K));
+    std::mt19937 gen(2);
+    std::uniform_real_distribution<double> r(-1.0, 1.0);
+    std::vector<double> v1(K.nonZeros(), 0.0), v2(K.nonZeros(), 0.0);
+    for (const MaterialPoint& mp : an.mpData) {
+      const int ne = nD * mp.nn;
+      Eigen::MatrixXd ke(ne, ne);
+      for (int c = 0; c < ne; ++c)
+        for (int q = 0; q < ne; ++q) ke(q, c) = r(gen);
+      int d[nD * MAXN];
+      for (int a = 0; a < mp.nn; ++a)
+        for (int i = 0; i < nD; ++i) d[nD * a + i] = dof(mp.nIN[a], i);
+      addToPattern(K, v1.data(), d, ne, ke);
+      addNodeBlocks(K, v2.data(), mp.nIN.data(), mp.nn, ke);
+    }
+    CHECK(v1 == v2);
+    double sum = 0.0;
+    for (double x : v1) sum += std::abs(x);
+    CHECK(sum > 0.0);
+    SpMat lone = K;                                   // a lone x-x entry breaks the blocks
+    SpMat extra(K.rows(), K.cols());
+    extra.insert(0, K.cols() - 2) = 0.0;
+    lone = lone + extra;
+    CHECK_FALSE(nodeBlocked(lone));
+  }
+
+
   TEST_CASE("stiffnessPattern: nodes that share a point are coupled and no others") {
     Analysis an = testing::smallBlock(MpType::MPM, CmType::Elastic, 2);  // 2 x 2 cells, 9 nodes
     elemMPinfo(an.mesh, an.mpData);
