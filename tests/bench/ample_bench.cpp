@@ -7,7 +7,10 @@
 // each run come from its summary.json. Suites (all when none is named):
 //   compaction  error (eq 37) and time, nelsy = 2^2..2^13, mpType 1-4
 //   scaling     run time and memory against points: compaction to 2^20 points
-//   scaling2d   the same for the collapse refined to 147,456 points
+//   scaling2d   the same for the collapse refined to 147,456 points (a = 2..16, 6x6
+//               points per cell), with solver=LU (the default) and solver=LDLT
+//   threads     the point loop on 1 and 2 OpenMP threads (AMPLE_OPENMP): collapse a = 8,
+//               16 (solver=LDLT), compaction 2^16 cells
 //   beam        tip displacement for a = 1, 2, 4 (6x6) and mp = 2, 3, 4 (a = 2),
 //               with the load-displacement history of each run
 //   collapse    extent and height, seed 002 table 5 and seed 000 table 6
@@ -17,6 +20,9 @@
 //               (seed 000 table 7), compaction with every update (fig 7)
 //   deepbeam    seed 003 tables II (points per cell, and 38^2) and III (h), both K2 couplings
 //   ibshear     seed 003 fig 16: shear stress error against xA = 0, 5, ..., 100 mm, both couplings
+// A case argument threads=N (the bench's own, not the program's) runs that case
+// with N OpenMP threads (omp_set_num_threads in the child); without it the
+// OpenMP default (OMP_NUM_THREADS, else the cores) holds.
 // Usage:   ample_bench [suite ...] [--out DIR] [--quick]
 // Outputs: DIR/<suite>.csv (default docs/results); plots: plotting/plot_results.py
 //--------------------------------------------------------------------------
@@ -31,6 +37,9 @@
 #include <sys/resource.h>
 #include <sys/wait.h>
 #include <unistd.h>
+#ifdef _OPENMP
+#include <omp.h>
+#endif
 
 namespace {
 
@@ -57,6 +66,14 @@ Run runOnce(const Args& args, const std::string& dir) {
   const double t0 = now();
   const pid_t pid = fork();
   if (pid == 0) {
+    for (size_t i = 0; i < a.size(); ++i)                 // threads=N: the bench's own
+      if (a[i].rfind("threads=", 0) == 0) {
+#ifdef _OPENMP
+        omp_set_num_threads(std::stoi(a[i].substr(8)));
+#endif
+        a.erase(a.begin() + long(i));
+        break;
+      }
     try {
       const ample::CliRequest req = ample::parseArgs(a);
       _exit(ample::ample(*req.setup, req.params, req.options));
@@ -141,10 +158,18 @@ std::vector<Suite> suites(bool quick) {
                             e >= 16 ? "tol=1e-8" : "tol=1e-9"}));           // 1e-9: tol 1e-8 there
   all.push_back(scal);
   Suite scal2{"scaling2d", {}, {"extent", "height"}};  // the collapse refined: the solver shows
-  for (int a : {2, 4, 8, 16})                          // (NRitMax 20: the finest run needs 11
-    scal2.cases.push_back(A({"collapse", "a=" + std::to_string(a), "mp=6", "NRitMax=20"}));  // passes)
-  if (quick) scal2.cases.resize(2);
+  for (const char* solver : {"solver=LU", "solver=LDLT"})  // (NRitMax 20: the finest run needs
+    for (int a : {2, 4, 8, 16})                            // 11 passes)
+      if (!quick || a <= 4)
+        scal2.cases.push_back(A({"collapse", "a=" + std::to_string(a), "mp=6", "NRitMax=20", solver}));
   all.push_back(scal2);
+  Suite thr{"threads", {}, {"extent", "height", "error"}};
+  for (const char* t : {"threads=1", "threads=2"}) {
+    thr.cases.push_back(A({"collapse", "a=8", "mp=6", "solver=LDLT", t}));
+    if (!quick) thr.cases.push_back(A({"collapse", "a=16", "mp=6", "NRitMax=20", "solver=LDLT", t}));
+    thr.cases.push_back(A({"compaction", quick ? "nelsy=8192" : "nelsy=65536", "tol=1e-8", t}));
+  }
+  all.push_back(thr);
 
   Suite beam{"beam", {}, {"tip_u_over_l", "tip_v_over_l"}, true};
   for (int a : {1, 2, 4}) beam.cases.push_back(A({"beam", "a=" + std::to_string(a), "mp=6"}));
