@@ -10,26 +10,31 @@ namespace ample {
 
 SpMat stiffnessPattern(int nDoF, const std::vector<MaterialPoint>& mpData) {
   const int nodes = nDoF / nD;
-  std::vector<int> start(nodes + 1, 0);  // rows of each node column, with repeats, bucketed
+  std::vector<int> start(nodes + 1, 0);  // the points of each node, bucketed
   for (const MaterialPoint& mp : mpData)
-    for (int b = 0; b < mp.nn; ++b) start[mp.nIN[b] + 1] += mp.nn;
+    for (int b = 0; b < mp.nn; ++b) start[mp.nIN[b] + 1]++;
   for (int n = 0; n < nodes; ++n) start[n + 1] += start[n];
-  std::vector<int> rows(start[nodes]), fill(start.begin(), start.end() - 1);
-  for (const MaterialPoint& mp : mpData)
-    for (int b = 0; b < mp.nn; ++b)
-      for (int a = 0; a < mp.nn; ++a) rows[fill[mp.nIN[b]]++] = mp.nIN[a];
-  Eigen::VectorXi perColumn = Eigen::VectorXi::Zero(nDoF);
-  for (int n = 0; n < nodes; ++n) {      // each column's distinct row nodes, ascending
-    auto first = rows.begin() + start[n], last = rows.begin() + start[n + 1];
-    std::sort(first, last);
-    fill[n] = int(std::unique(first, last) - rows.begin());   // end of the distinct rows
-    for (int k = 0; k < nD; ++k) perColumn(dof(n, k)) = nD * int(fill[n] - start[n]);
+  std::vector<int> points(start[nodes]), fill(start.begin(), start.end() - 1);
+  for (int p = 0; p < int(mpData.size()); ++p)
+    for (int b = 0; b < mpData[p].nn; ++b) points[fill[mpData[p].nIN[b]]++] = p;
+  std::vector<int> seen(nodes, -1), rowStart(nodes + 1, 0), rows;  // each column's distinct
+  for (int n = 0; n < nodes; ++n) {                                  // row nodes, ascending
+    for (int e = start[n]; e < start[n + 1]; ++e) {
+      const MaterialPoint& mp = mpData[points[e]];
+      for (int a = 0; a < mp.nn; ++a)
+        if (seen[mp.nIN[a]] != n) seen[mp.nIN[a]] = n, rows.push_back(mp.nIN[a]);
+    }
+    std::sort(rows.begin() + rowStart[n], rows.end());
+    rowStart[n + 1] = int(rows.size());
   }
+  Eigen::VectorXi perColumn(nDoF);
+  for (int n = 0; n < nodes; ++n)
+    for (int k = 0; k < nD; ++k) perColumn(dof(n, k)) = nD * (rowStart[n + 1] - rowStart[n]);
   SpMat K(nDoF, nDoF);
   K.reserve(perColumn);
   for (int n = 0; n < nodes; ++n)
     for (int k = 0; k < nD; ++k)
-      for (int e = start[n]; e < fill[n]; ++e)
+      for (int e = rowStart[n]; e < rowStart[n + 1]; ++e)
         for (int i = 0; i < nD; ++i) K.insert(dof(rows[e], i), dof(n, k)) = 0.0;
   K.makeCompressed();
   return K;

@@ -5,8 +5,8 @@
 // couples two nodes when a material point links both. The points link the
 // same nodes in every Newton-Raphson pass of a load step, so
 //   stiffnessPattern  builds the pattern once per step, from node buckets
-//                     (each node column collects the nodes of its points,
-//                     sorted and made unique), every value 0;
+//                     (each node column collects the distinct nodes of its
+//                     points, marked as seen, then sorted), every value 0;
 //   addToPattern      adds one point stiffness k_p into that pattern: a merge
 //                     along each column of the point's ascending dofs;
 //   addNodeBlocks     the same for a node-blocked pattern (nodeBlocked: every
