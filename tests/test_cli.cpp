@@ -152,7 +152,7 @@ TEST_SUITE("cli") {
     }
   }
 
-  TEST_CASE("cli: --vtk-format ascii (default) or binary; anything else is refused naming both") {
+  TEST_CASE("cli: --vtk-format ascii (default) or binary / anything else is refused naming both") {
     CHECK(parseArgs({"compaction"}).options.vtkFormat == VtkFormat::Ascii);
     CHECK(parseArgs({"compaction", "--vtk-format", "binary"}).options.vtkFormat == VtkFormat::Binary);
     CHECK(parseArgs({"compaction", "--vtk-format", "binary", "--vtk-format", "ascii"}).options.vtkFormat ==

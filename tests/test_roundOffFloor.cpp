@@ -66,7 +66,7 @@ TEST_SUITE("roundOffFloor") {
     CHECK(roundOffFloor({mp}, uvw, load) == doctest::Approx(want).epsilon(1e-14));
   }
 
-  TEST_CASE("roundOffFloor: a compaction at tol = 1e-16 stalls at the estimated floor; the suggested tol passes") {
+  TEST_CASE("roundOffFloor: a compaction at tol = 1e-16 stalls at the estimated floor / and the tol it suggests passes") {
     // 64 cells: the residual of load step 1 stops falling near 1e-13 (eps n^1.5 / 3); the
     // message names the stall and the floor, the estimate within a factor 10 of the stall
     // (2.1 measured at 2^14-2^16 cells, roundOffFloor.h), and the tol it suggests
