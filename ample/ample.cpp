@@ -57,7 +57,7 @@ static void recordPass(RunLog& log, const std::vector<MaterialPoint>& mpData, in
 static double normalisedResidual(const Eigen::VectorXd& oobf, const Eigen::VectorXd& fext,
                                  const Eigen::VectorXd& frct, const Eigen::VectorXd& frctLast, int NRit);
 static void checkConverged(const Analysis& an, const RunLog& log, int lstp, int NRit, double fErr,
-                           const Eigen::VectorXd& uvw, const Eigen::VectorXd& load);
+                           const Eigen::VectorXd& uvw, const Eigen::VectorXd& load, bool acceptFloor);
 static void recordStep(RunLog& log, const Increment& inc, int NRit, double fErr, bool converged);
 
 int ample(const Setup& setup, const Params& P, const RunOptions& opt) {
@@ -118,7 +118,7 @@ void solve(Analysis& an, RunLog& log, const RunOptions& opt) {
         recordPass(log, mpData, lstp, NRit, fErr, opt.quiet);        // throws on NaN
         NRit++;
       }
-      checkConverged(an, log, lstp, NRit, fErr, uvw, fext + frct + fib);  // throws when fErr > tol
+      checkConverged(an, log, lstp, NRit, fErr, uvw, fext + frct + fib, opt.acceptFloor);  // fErr > tol: throws
     } catch (const RunError& e) {                                    // no convergence, NaN, singular
       recordStep(log, inc, NRit, fErr, false);
       loadSteps.retry(inc, e, an, opt.quiet);                        // remedies (off: rethrows e)
@@ -258,9 +258,11 @@ static double normalisedResidual(const Eigen::VectorXd& oobf, const Eigen::Vecto
 // does, and the message names one). Stalled: the last three residuals of the step within
 // a factor 3 of each other; at the floor: no more than 10 times the estimate (the
 // estimate is good to a factor of a few: roundOffFloor.h). uvw and load = fext + frct
-// (+ IB reactions) of the last pass are only read when the step failed.
+// (+ IB reactions) of the last pass are only read when the step failed. acceptFloor
+// (--accept-floor, off by default) accepts a step stalled at its floor as converged, said on
+// stderr; it acts only where the step has failed, so no run that converges changes.
 static void checkConverged(const Analysis& an, const RunLog& log, int lstp, int NRit, double fErr,
-                           const Eigen::VectorXd& uvw, const Eigen::VectorXd& load) {
+                           const Eigen::VectorXd& uvw, const Eigen::VectorXd& load, bool acceptFloor) {
   if (fErr <= an.tol) return;
   char msg[600];
   int n = std::snprintf(msg, sizeof msg, "load step %d did not converge: fErr = %.3e > tol = %.1e "
@@ -276,6 +278,12 @@ static void checkConverged(const Analysis& an, const RunLog& log, int lstp, int 
                     "%.2e, %.2e, %.2e), its estimated round-off floor is %.1e (ample/roundOffFloor.h): "
                     "more passes will not help, a tol above the floor would pass, e.g. tol=1e%d",
                     hi, r0, r1, r2, floor, tolExp);
+      if (acceptFloor) {
+        std::fprintf(stderr, "ample: load step %d accepted at its round-off floor (--accept-floor): "
+                     "fErr = %.3e > tol = %.1e, stalled at %.2e, estimated floor %.1e\n",
+                     lstp, fErr, an.tol, hi, floor);
+        return;
+      }
     } else if (r2 < r1 && r1 < r0 && r2 < 1e-3) {
       std::snprintf(msg + n, sizeof msg - n, "; the residual was still falling (%.1e, %.1e, %.1e): "
                     "more passes may converge, e.g. NRitMax=%d", r0, r1, r2, 2 * an.NRitMax);

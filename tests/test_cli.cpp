@@ -176,6 +176,8 @@ TEST_SUITE("cli") {
     CHECK(runBinary("compaction nelsy=4 lstps=1 E=1e6 --vtk-format binary2 --out " + dir) == 2);
     CHECK(!std::filesystem::exists(dir));
     CHECK(usageText().find("--vtk-format F") != std::string::npos);
+    CHECK(!parseArgs({"compaction"}).options.acceptFloor);         // the paper's: a stall fails
+    CHECK(parseArgs({"compaction", "--accept-floor"}).options.acceptFloor);
   }
 
   TEST_CASE("cli: the program exits 2 on bad input and writes nothing") {
