@@ -36,8 +36,11 @@
 #include "loadSteps.h"
 #include "plotting/postPro.h"
 #include "plotting/writeOutput.h"
+#include "roundOffFloor.h"
 #include "updateMPs.h"
+#include <algorithm>
 #include <cfloat>
+#include <cmath>
 #include <cstdio>
 #include <iostream>
 
@@ -53,7 +56,8 @@ static void recordPass(RunLog& log, const std::vector<MaterialPoint>& mpData, in
                        double fErr, bool quiet);
 static double normalisedResidual(const Eigen::VectorXd& oobf, const Eigen::VectorXd& fext,
                                  const Eigen::VectorXd& frct, const Eigen::VectorXd& frctLast, int NRit);
-static void checkConverged(const Analysis& an, const RunLog& log, int lstp, int NRit, double fErr);
+static void checkConverged(const Analysis& an, const RunLog& log, int lstp, int NRit, double fErr,
+                           const Eigen::VectorXd& uvw, const Eigen::VectorXd& load, bool acceptFloor);
 static void recordStep(RunLog& log, const Increment& inc, int NRit, double fErr, bool converged);
 
 int ample(const Setup& setup, const Params& P, const RunOptions& opt) {
@@ -115,7 +119,7 @@ void solve(Analysis& an, RunLog& log, const RunOptions& opt) {
         recordPass(log, mpData, lstp, NRit, fErr, opt.quiet);        // throws on NaN
         NRit++;
       }
-      checkConverged(an, log, lstp, NRit, fErr);                     // throws when fErr > tol
+      checkConverged(an, log, lstp, NRit, fErr, uvw, fext + frct + fib, opt.acceptFloor);  // fErr > tol: throws
     } catch (const RunError& e) {                                    // no convergence, NaN, singular
       recordStep(log, inc, NRit, fErr, false);
       loadSteps.retry(inc, e, an, opt.quiet);                        // remedies (off: rethrows e)
@@ -130,7 +134,7 @@ void solve(Analysis& an, RunLog& log, const RunOptions& opt) {
     moveBoundaries(an.boundaries, lstp, inc.bcScale(an.lstps));      // seed 003: by their du
     if (!inc.last) continue;                                         // (remedy: a first half)
     if (an.afterStep) an.afterStep(an, lstp);                        // setup's hook
-    timed(T.postPro, postPro, mesh, mpData, uvw, lstp, opt.vtkEvery, opt.outDir);
+    timed(T.postPro, postPro, mesh, mpData, uvw, lstp, opt.vtkEvery, opt.outDir, opt.vtkFormat);
     log.steps.back().seconds = log.stepClock.lap();
     log.lastConverged = lstp;
   }
@@ -249,19 +253,42 @@ static double normalisedResidual(const Eigen::VectorXd& oobf, const Eigen::Vecto
   return oobf.norm() / ((fext + r).array() + DBL_EPSILON).matrix().norm();
 }
 
-// a step that ended with fErr > tol stops (or is retried); when the residual was
-// still falling fast, the message says that more passes may well converge
-static void checkConverged(const Analysis& an, const RunLog& log, int lstp, int NRit, double fErr) {
+// a step that ended with fErr > tol stops (or is retried). The message says why when it can:
+// the residual was still falling fast (more passes may well converge), or it had stalled
+// at its round-off floor (roundOffFloor.h: then no number of passes helps, a larger tol
+// does, and the message names one). Stalled: the last three residuals of the step within
+// a factor 3 of each other; at the floor: no more than 10 times the estimate (the
+// estimate is good to a factor of a few: roundOffFloor.h). uvw and load = fext + frct
+// (+ IB reactions) of the last pass are only read when the step failed. acceptFloor
+// (--accept-floor, off by default) accepts a step stalled at its floor as converged, said on
+// stderr; it acts only where the step has failed, so no run that converges changes.
+static void checkConverged(const Analysis& an, const RunLog& log, int lstp, int NRit, double fErr,
+                           const Eigen::VectorXd& uvw, const Eigen::VectorXd& load, bool acceptFloor) {
   if (fErr <= an.tol) return;
-  char msg[400];
+  char msg[600];
   int n = std::snprintf(msg, sizeof msg, "load step %d did not converge: fErr = %.3e > tol = %.1e "
                         "after %d Newton-Raphson passes (NRitMax = %d)", lstp, fErr, an.tol, NRit, an.NRitMax);
   const size_t k = log.residuals.size();
   if (k >= 3 && log.residuals[k - 3].lstp == lstp) {
     const double r0 = log.residuals[k - 3].fErr, r1 = log.residuals[k - 2].fErr, r2 = fErr;
-    if (r2 < r1 && r1 < r0 && r2 < 1e-3)
+    const double hi = std::max({r0, r1, r2}), lo = std::min({r0, r1, r2});
+    const double floor = hi < 3 * lo ? roundOffFloor(an.mpData, uvw, load) : 0.0;
+    if (hi < 3 * lo && hi <= 10 * floor) {
+      const int tolExp = int(std::ceil(std::log10(2 * hi)));       // 10^tolExp >= 2 x the stall
+      std::snprintf(msg + n, sizeof msg - n, "; the residual stalled at %.2e (its last three passes "
+                    "%.2e, %.2e, %.2e), its estimated round-off floor is %.1e (ample/roundOffFloor.h): "
+                    "more passes will not help, a tol above the floor would pass, e.g. tol=1e%d",
+                    hi, r0, r1, r2, floor, tolExp);
+      if (acceptFloor) {
+        std::fprintf(stderr, "ample: load step %d accepted at its round-off floor (--accept-floor): "
+                     "fErr = %.3e > tol = %.1e, stalled at %.2e, estimated floor %.1e\n",
+                     lstp, fErr, an.tol, hi, floor);
+        return;
+      }
+    } else if (r2 < r1 && r1 < r0 && r2 < 1e-3) {
       std::snprintf(msg + n, sizeof msg - n, "; the residual was still falling (%.1e, %.1e, %.1e): "
                     "more passes may converge, e.g. NRitMax=%d", r0, r1, r2, 2 * an.NRitMax);
+    }
   }
   throw NewtonFailure(msg);
 }

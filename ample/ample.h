@@ -6,7 +6,7 @@
 // plotting/writeOutput.h). solve is the loops alone, on an analysis already
 // set up, in memory: the tests call it.
 // Inputs:  setup (from the table) · P (its parameters) · opt (output folder,
-//          VTK interval, quiet) | an · log
+//          VTK interval and format, quiet) | an · log
 // Outputs: files in opt.outDir · return value: 0 converged, 1 a load step did
 //          not converge or the run could not go on (message on stderr) |
 //          an (mesh, mpData, frct) · log; solve throws RunError (NewtonFailure
@@ -15,6 +15,7 @@
 //--------------------------------------------------------------------------
 #pragma once
 #include "analysis.h"
+#include "plotting/makeVtkWriter.h"
 #include "plotting/runLog.h"
 #include "setups/setups.h"
 #include <string>
@@ -26,6 +27,9 @@ struct RunOptions {
   int vtkEvery = 1;        // write mpData_<lstp>.vtk every vtkEvery steps (0 = none)
   bool quiet = false;      // no progress on stdout
   int lastStep = 0;        // stop after this load step (0: all lstps; the tests use it)
+  VtkFormat vtkFormat = VtkFormat::Ascii;  // the VTK files as ASCII or BINARY (--vtk-format)
+  bool acceptFloor = false;  // accept a step whose residual stalled at its round-off floor
+                             // (--accept-floor; checkConverged, ample/roundOffFloor.h)
 };
 
 int ample(const Setup& setup, const Params& P, const RunOptions& opt);

@@ -57,6 +57,7 @@ CliRequest parseArgs(const std::vector<std::string>& args) {
     const bool hasValue = i + 1 < args.size();
     if (a == "--help" || a == "-h") { req.mode = CliMode::SetupHelp; return req; }
     if (a == "--quiet") { req.options.quiet = true; continue; }
+    if (a == "--accept-floor") { req.options.acceptFloor = true; continue; }
     if (a == "--out") {
       if (!hasValue || args[i + 1].empty()) throw InputError("option '--out' needs a folder name");
       req.options.outDir = args[++i];
@@ -70,10 +71,18 @@ CliRequest parseArgs(const std::vector<std::string>& args) {
       req.options.vtkEvery = int(v);
       continue;
     }
+    if (a == "--vtk-format") {
+      const std::string v = hasValue ? args[++i] : "";
+      if (v != "ascii" && v != "binary")
+        throw InputError("option '--vtk-format'" + (hasValue ? " = '" + v + "'" : std::string()) +
+                         ": allowed ascii (the default) or binary");
+      req.options.vtkFormat = v == "binary" ? VtkFormat::Binary : VtkFormat::Ascii;
+      continue;
+    }
     const size_t eq = a.find('=');
     if (eq == std::string::npos || eq == 0)
       throw InputError("cannot read argument '" + a + "': expected name=value or an option "
-                       "(--out DIR, --vtk N, --quiet, --help)");
+                       "(--out DIR, --vtk N, --vtk-format F, --accept-floor, --quiet, --help)");
     setParam(req.params, a.substr(0, eq), a.substr(eq + 1), *req.setup);
   }
   return req;
@@ -83,10 +92,15 @@ std::string usageText() {
   return "usage: ample --list                 list the setups\n"
          "       ample --help                 this text\n"
          "       ample <setup> --help         the setup's parameters and defaults\n"
-         "       ample <setup> [name=value ...] [--out DIR] [--vtk N] [--quiet]\n"
-         "  --out DIR   output folder (default output/<setup>)\n"
-         "  --vtk N     write mpData_<lstp>.vtk every N load steps (default 1, 0 = none)\n"
-         "  --quiet     no progress lines\n"
+         "       ample <setup> [name=value ...] [--out DIR] [--vtk N] [--vtk-format F]\n"
+         "                                    [--accept-floor] [--quiet]\n"
+         "  --out DIR         output folder (default output/<setup>)\n"
+         "  --vtk N           write mpData_<lstp>.vtk every N load steps (default 1, 0 = none)\n"
+         "  --vtk-format F    ascii (default: text, 15 digits) or binary (legacy VTK BINARY:\n"
+         "                    big-endian 4-byte floats and ints, smaller and faster to write)\n"
+         "  --accept-floor    accept a load step whose residual stalled at its estimated\n"
+         "                    round-off floor (said on stderr; off: such a step fails)\n"
+         "  --quiet           no progress lines\n"
          "exit status: 0 converged, 1 a load step did not converge, 2 bad input\n"
          "units: SI (m, N, Pa, kg/m3, m/s2); tension positive; gravity acts in -y\n";
 }

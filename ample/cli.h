@@ -3,7 +3,8 @@
 //--------------------------------------------------------------------------
 //   ample --list | --help
 //   ample <setup> --help
-//   ample <setup> [name=value ...] [--out DIR] [--vtk N] [--quiet]
+//   ample <setup> [name=value ...] [--out DIR] [--vtk N] [--vtk-format ascii|binary]
+//                 [--accept-floor] [--quiet]
 // Every value is checked before any work: a number, whole where required,
 // inside the parameter's range; unknown names and options are refused.
 // Inputs:  args (the words after the program name)

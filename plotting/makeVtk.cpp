@@ -7,7 +7,6 @@
 #include "ample/errors.h"
 #include <cstdio>
 #include <fstream>
-#include <sstream>
 
 namespace ample {
 
@@ -22,26 +21,31 @@ void atomicWrite(const std::string& path, const std::string& text) {
   if (std::rename(tmp.c_str(), path.c_str()) != 0) throw RunError("cannot rename " + tmp);
 }
 
-void makeVtk(const Mesh& mesh, const std::string& path, const Eigen::VectorXd& uvw) {
-  std::ostringstream s;
-  s.precision(15);
-  s << "# vtk DataFile Version 2.0\nample-cpp background mesh\nASCII\n"
-    << "DATASET UNSTRUCTURED_GRID\nPOINTS " << mesh.nodes() << " double\n";
-  for (int n = 0; n < mesh.nodes(); ++n) s << mesh.coord(n, 0) << " " << mesh.coord(n, 1) << " 0\n";
-  s << "CELLS " << mesh.nels() << " " << mesh.nels() * (mesh.cellNodes() + 1) << "\n";
-  for (int e = 0; e < mesh.nels(); ++e) {
-    s << mesh.cellNodes();
-    for (int a = 0; a < mesh.cellNodes(); ++a) s << " " << mesh.etpl(e, a);
-    s << "\n";
+void makeVtk(const Mesh& mesh, const std::string& path, const Eigen::VectorXd& uvw, VtkFormat format) {
+  VtkWriter w(format, "ample-cpp background mesh", "UNSTRUCTURED_GRID");
+  const int nn = mesh.nodes(), ne = mesh.nels(), cn = mesh.cellNodes();
+  w.line("POINTS " + std::to_string(nn) + " " + w.realType());
+  std::vector<double> xyz(3 * size_t(nn), 0.0);             // z = 0
+  for (int n = 0; n < nn; ++n) xyz[3 * n] = mesh.coord(n, 0), xyz[3 * n + 1] = mesh.coord(n, 1);
+  w.reals(xyz, 3);
+  w.line("CELLS " + std::to_string(ne) + " " + std::to_string(ne * (cn + 1)));
+  std::vector<int> cells;
+  cells.reserve(size_t(ne) * (cn + 1));
+  for (int e = 0; e < ne; ++e) {
+    cells.push_back(cn);
+    for (int a = 0; a < cn; ++a) cells.push_back(mesh.etpl(e, a));
   }
-  s << "CELL_TYPES " << mesh.nels() << "\n";
-  const char* type = mesh.cellNodes() == 3 ? "5\n" : "9\n";  // VTK_TRIANGLE, VTK_QUAD
-  for (int e = 0; e < mesh.nels(); ++e) s << type;
+  w.ints(cells, cn + 1);
+  w.line("CELL_TYPES " + std::to_string(ne));
+  w.ints(std::vector<int>(size_t(ne), cn == 3 ? 5 : 9), 1);  // VTK_TRIANGLE, VTK_QUAD
   if (uvw.size() == mesh.nDoF()) {
-    s << "POINT_DATA " << mesh.nodes() << "\nVECTORS displacement double\n";
-    for (int n = 0; n < mesh.nodes(); ++n) s << uvw(dof(n, 0)) << " " << uvw(dof(n, 1)) << " 0\n";
+    w.line("POINT_DATA " + std::to_string(nn));
+    w.line(std::string("VECTORS displacement ") + w.realType());
+    std::vector<double> u(3 * size_t(nn), 0.0);
+    for (int n = 0; n < nn; ++n) u[3 * n] = uvw(dof(n, 0)), u[3 * n + 1] = uvw(dof(n, 1));
+    w.reals(u, 3);
   }
-  atomicWrite(path, s.str());
+  atomicWrite(path, w.text());
 }
 
 }  // namespace ample

@@ -7,26 +7,34 @@
 #include "makeVtk.h"
 #include <cmath>
 #include <functional>
-#include <sstream>
 
 namespace ample {
 
-void makeVtkMP(const std::vector<MaterialPoint>& mpData, const std::string& path) {
+void makeVtkMP(const std::vector<MaterialPoint>& mpData, const std::string& path, VtkFormat format) {
   const size_t nmp = mpData.size();
-  std::ostringstream s;
-  s.precision(15);
-  s << "# vtk DataFile Version 2.0\nample-cpp material points\nASCII\n"
-    << "DATASET UNSTRUCTURED_GRID\nPOINTS " << nmp << " double\n";
-  for (const MaterialPoint& mp : mpData) s << mp.mpC(0) << " " << mp.mpC(1) << " 0\n";
-  s << "CELLS " << nmp << " " << 2 * nmp << "\n";
-  for (size_t p = 0; p < nmp; ++p) s << "1 " << p << "\n";
-  s << "CELL_TYPES " << nmp << "\n";
-  for (size_t p = 0; p < nmp; ++p) s << "1\n";  // VTK_VERTEX
-  s << "POINT_DATA " << nmp << "\nVECTORS displacement double\n";
-  for (const MaterialPoint& mp : mpData) s << mp.u(0) << " " << mp.u(1) << " 0\n";
+  const std::string n = std::to_string(nmp);
+  VtkWriter w(format, "ample-cpp material points", "UNSTRUCTURED_GRID");
+  auto perPoint = [&](int width, const std::function<double(const MaterialPoint&, int)>& f) {
+    std::vector<double> v(width * nmp);
+    for (size_t p = 0; p < nmp; ++p)
+      for (int c = 0; c < width; ++c) v[width * p + c] = f(mpData[p], c);
+    w.reals(v, width);
+  };
+  w.line("POINTS " + n + " " + w.realType());
+  perPoint(3, [](const MaterialPoint& mp, int c) { return c < 2 ? mp.mpC(c) : 0.0; });  // z = 0
+  w.line("CELLS " + n + " " + std::to_string(2 * nmp));
+  std::vector<int> cells(2 * nmp, 1);                       // "1 p": one node, point p
+  for (size_t p = 0; p < nmp; ++p) cells[2 * p + 1] = int(p);
+  w.ints(cells, 2);
+  w.line("CELL_TYPES " + n);
+  w.ints(std::vector<int>(nmp, 1), 1);                      // VTK_VERTEX
+  w.line("POINT_DATA " + n);
+  w.line(std::string("VECTORS displacement ") + w.realType());
+  perPoint(3, [](const MaterialPoint& mp, int c) { return c < 2 ? mp.u(c) : 0.0; });
   auto scalar = [&](const char* name, const std::function<double(const MaterialPoint&)>& f) {
-    s << "SCALARS " << name << " double 1\nLOOKUP_TABLE default\n";
-    for (const MaterialPoint& mp : mpData) s << f(mp) << "\n";
+    w.line(std::string("SCALARS ") + name + " " + w.realType() + " 1");
+    w.line("LOOKUP_TABLE default");
+    perPoint(1, [&f](const MaterialPoint& mp, int) { return f(mp); });
   };
   scalar("ux", [](const MaterialPoint& mp) { return mp.u(0); });
   scalar("uy", [](const MaterialPoint& mp) { return mp.u(1); });
@@ -39,7 +47,7 @@ void makeVtkMP(const std::vector<MaterialPoint>& mpData, const std::string& path
   scalar("volume", [](const MaterialPoint& mp) { return mp.vp; });
   scalar("lpx", [](const MaterialPoint& mp) { return mp.lp(0); });
   scalar("lpy", [](const MaterialPoint& mp) { return mp.lp(1); });
-  atomicWrite(path, s.str());
+  atomicWrite(path, w.text());
 }
 
 }  // namespace ample

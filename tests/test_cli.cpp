@@ -152,6 +152,34 @@ TEST_SUITE("cli") {
     }
   }
 
+  TEST_CASE("cli: --vtk-format ascii (default) or binary / anything else is refused naming both") {
+    CHECK(parseArgs({"compaction"}).options.vtkFormat == VtkFormat::Ascii);
+    CHECK(parseArgs({"compaction", "--vtk-format", "binary"}).options.vtkFormat == VtkFormat::Binary);
+    CHECK(parseArgs({"compaction", "--vtk-format", "binary", "--vtk-format", "ascii"}).options.vtkFormat ==
+          VtkFormat::Ascii);  // the last one given
+    for (const std::vector<std::string>& args : std::vector<std::vector<std::string>>{
+             {"compaction", "--vtk-format"}, {"compaction", "--vtk-format", "BINARY"},
+             {"compaction", "--vtk-format", "xml"}, {"compaction", "--vtk-format", ""}}) {
+      CAPTURE(args.size());
+      std::string m;
+      try {
+        parseArgs(args);
+      } catch (const InputError& e) {
+        m = e.what();
+      }
+      CHECK(m.find("option '--vtk-format'") != std::string::npos);
+      CHECK(m.find("allowed ascii (the default) or binary") != std::string::npos);
+      if (args.size() == 3) CHECK(m.find("'" + args[2] + "'") != std::string::npos);
+    }
+    const std::string dir = std::string(AMPLE_TEST_TMP) + "/cli_vtkformat";
+    std::filesystem::remove_all(dir);
+    CHECK(runBinary("compaction nelsy=4 lstps=1 E=1e6 --vtk-format binary2 --out " + dir) == 2);
+    CHECK(!std::filesystem::exists(dir));
+    CHECK(usageText().find("--vtk-format F") != std::string::npos);
+    CHECK(!parseArgs({"compaction"}).options.acceptFloor);         // the paper's: a stall fails
+    CHECK(parseArgs({"compaction", "--accept-floor"}).options.acceptFloor);
+  }
+
   TEST_CASE("cli: the program exits 2 on bad input and writes nothing") {
     const std::string dir = std::string(AMPLE_TEST_TMP) + "/cli_bad";
     std::filesystem::remove_all(dir);

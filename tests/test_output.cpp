@@ -1,10 +1,12 @@
-// Tests of the output (postPro, makeVtk, makeVtkMP, writeOutput): files
+// Tests of the output (postPro, makeVtk, makeVtkMP, makeVtkWriter, writeOutput): files
 // written by a short run are read back and compared with the state in memory.
 #include "ample/ample.h"
 #include "testProblems.h"
 #include <doctest/doctest.h>
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
+#include <cstring>
 #include <filesystem>
 #include <functional>
 #include <fstream>
@@ -275,5 +277,183 @@ TEST_SUITE("output") {
         ++rows;
       }
     CHECK(rows == 19);
+  }
+}
+
+// issue 14: --vtk-format binary. Both formats of the same run are read by one reader written
+// here from the legacy format (VTK file formats, "Simple Legacy Formats"): four header lines,
+// then keyword lines, each followed by its numbers: in ASCII as text, in BINARY as big-endian
+// 4-byte IEEE floats / int32 with one "\n" after the block.
+namespace {
+struct VtkSection {
+  std::string keyword;              // the keyword line, e.g. "POINTS 16 float"
+  std::vector<double> reals;
+  std::vector<long> ints;
+};
+struct VtkFile {
+  std::vector<std::string> header;  // the four header lines
+  std::vector<VtkSection> sections;
+  size_t bytes = 0;                 // the file's size
+  size_t consumed = 0;              // the bytes the reader used: must be all of them
+};
+
+VtkFile readLegacyVtk(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  const std::string b((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  size_t pos = 0;
+  auto line = [&]() {
+    const size_t end = b.find('\n', pos);
+    REQUIRE(end != std::string::npos);
+    const std::string l = b.substr(pos, end - pos);
+    pos = end + 1;
+    return l;
+  };
+  VtkFile f;
+  f.bytes = b.size();
+  for (int k = 0; k < 4; ++k) f.header.push_back(line());
+  const bool binary = f.header[2] == "BINARY";
+  auto word32 = [&]() {               // big-endian: the most significant byte first
+    REQUIRE(pos + 4 <= b.size());
+    std::uint32_t u = 0;
+    for (int k = 0; k < 4; ++k) u = (u << 8) | std::uint32_t(static_cast<unsigned char>(b[pos++]));
+    return u;
+  };
+  auto text = [&]() {                 // the next number of an ASCII block
+    while (pos < b.size() && (b[pos] == ' ' || b[pos] == '\n')) ++pos;
+    const size_t end = b.find_first_of(" \n", pos);
+    REQUIRE(end != std::string::npos);
+    const std::string t = b.substr(pos, end - pos);
+    pos = end;
+    return t;
+  };
+  long nPointData = 0;
+  while (pos < b.size()) {
+    VtkSection s;
+    s.keyword = line();
+    std::istringstream w(s.keyword);
+    std::string key;
+    long n = 0, size = 0, reals = 0, ints = 0;
+    w >> key;
+    if (key == "POINTS") { w >> n; reals = 3 * n; }
+    else if (key == "CELLS") { w >> n >> size; ints = size; }
+    else if (key == "CELL_TYPES") { w >> n; ints = n; }
+    else if (key == "POINT_DATA") { w >> nPointData; }
+    else if (key == "VECTORS") { reals = 3 * nPointData; }
+    else if (key == "SCALARS") { CHECK(line() == "LOOKUP_TABLE default"); reals = nPointData; }
+    else FAIL("unexpected keyword line '" << s.keyword << "'");
+    for (long k = 0; k < reals; ++k) {
+      if (!binary) { s.reals.push_back(std::stod(text())); continue; }
+      const std::uint32_t u = word32();
+      float x;
+      std::memcpy(&x, &u, 4);
+      s.reals.push_back(x);
+    }
+    for (long k = 0; k < ints; ++k) s.ints.push_back(binary ? long(std::int32_t(word32())) : std::stol(text()));
+    if (reals + ints > 0) {           // the block ends its line
+      REQUIRE(pos < b.size());
+      CHECK(b[pos] == '\n');
+      ++pos;
+    }
+    f.sections.push_back(s);
+  }
+  f.consumed = pos;
+  return f;
+}
+
+// the size the BINARY file must have for the sections of the ASCII one: the same lines with
+// "float" for "double", and 4 bytes per number plus one "\n" per block
+size_t binarySizeOf(const VtkFile& ascii) {
+  size_t n = 0;
+  for (size_t k = 0; k < 4; ++k) n += (k == 2 ? std::string("BINARY") : ascii.header[k]).size() + 1;
+  for (const VtkSection& s : ascii.sections) {
+    std::string kw = s.keyword;
+    const size_t d = kw.find(" double");
+    if (d != std::string::npos) kw.replace(d, 7, " float");
+    n += kw.size() + 1;
+    if (kw.rfind("SCALARS", 0) == 0) n += std::string("LOOKUP_TABLE default").size() + 1;
+    const size_t numbers = s.reals.size() + s.ints.size();
+    if (numbers > 0) n += 4 * numbers + 1;
+  }
+  return n;
+}
+
+// every section and every number of a BINARY file against the ASCII file of the same run.
+// Reals: a float is the double rounded to nearest, relative error <= 2^-24 = 5.96e-8; the
+// ASCII text has 15 digits (5e-15): tolerance 6e-8 |ascii| + 1e-44 (a float below 1.2e-38 is
+// subnormal, absolute error <= 7e-46). Ints: equal.
+void checkBinaryAgainstAscii(const std::string& binPath, const std::string& asciiPath) {
+  CAPTURE(binPath);
+  const VtkFile a = readLegacyVtk(asciiPath), b = readLegacyVtk(binPath);
+  CHECK(a.header[2] == "ASCII");
+  CHECK(b.header[0] == "# vtk DataFile Version 2.0");
+  CHECK(b.header[1] == a.header[1]);
+  CHECK(b.header[2] == "BINARY");
+  CHECK(b.header[3] == "DATASET UNSTRUCTURED_GRID");
+  CHECK(a.consumed == a.bytes);
+  CHECK(b.consumed == b.bytes);                  // nothing left over, nothing missing
+  CHECK(b.bytes == binarySizeOf(a));             // the exact size of the legacy layout
+  REQUIRE(b.sections.size() == a.sections.size());
+  for (size_t s = 0; s < a.sections.size(); ++s) {
+    const VtkSection &sa = a.sections[s], &sb = b.sections[s];
+    CAPTURE(sa.keyword);
+    std::string kw = sa.keyword;
+    if (kw.find(" double") != std::string::npos) kw.replace(kw.find(" double"), 7, " float");
+    CHECK(sb.keyword == kw);
+    REQUIRE(sb.reals.size() == sa.reals.size());
+    REQUIRE(sb.ints.size() == sa.ints.size());
+    int bad = 0;
+    for (size_t k = 0; k < sa.reals.size(); ++k)
+      bad += !(std::abs(sb.reals[k] - sa.reals[k]) <= 6e-8 * std::abs(sa.reals[k]) + 1e-44);
+    for (size_t k = 0; k < sa.ints.size(); ++k) bad += sb.ints[k] != sa.ints[k];
+    CHECK(bad == 0);
+  }
+}
+}  // namespace
+
+TEST_SUITE("output") {
+  TEST_CASE("output: --vtk-format binary writes the same sections and values as ASCII, big-endian floats") {
+    // the beam bends (every stress component and the displacements non-zero, all different);
+    // mesh.vtk (no point data), mesh_<lstp>.vtk (nodal displacements), mpData_<lstp>.vtk
+    const Setup* s = findSetup("beam");
+    Params P = s->params();
+    for (const auto& kv : std::vector<std::pair<std::string, double>>{{"a", 1}, {"mp", 2}, {"lstps", 3}, {"P", 10e3}})
+      setDefault(P, kv.first, kv.second);
+    const std::string dirA = std::string(AMPLE_TEST_TMP) + "/output_vtk_ascii",
+                      dirB = std::string(AMPLE_TEST_TMP) + "/output_vtk_binary";
+    RunOptions opt{dirA, 1, true};
+    REQUIRE(ample::ample(*s, P, opt) == 0);
+    opt.outDir = dirB;
+    opt.vtkFormat = VtkFormat::Binary;
+    REQUIRE(ample::ample(*s, P, opt) == 0);
+    for (const char* f : {"mesh.vtk", "mesh_1.vtk", "mesh_3.vtk", "mpData_1.vtk", "mpData_3.vtk"})
+      checkBinaryAgainstAscii(dirB + "/" + f, dirA + "/" + f);
+    // the saving is in the points' reals (15 digits against 4 bytes); the grid's small
+    // integers and short coordinates ("4 0 1 24 23") are shorter as text: mesh.vtk grows
+    const size_t a = readLegacyVtk(dirA + "/mpData_3.vtk").bytes, b = readLegacyVtk(dirB + "/mpData_3.vtk").bytes;
+    CHECK(double(b) < 0.4 * double(a));
+    const VtkFile mp = readLegacyVtk(dirB + "/mpData_3.vtk");
+    CHECK(mp.sections.size() == 17);             // points, cells, types, point data, u, 12 scalars
+    double sxy = 0;                              // the run exercises a shear stress
+    for (const VtkSection& sec : mp.sections)
+      if (sec.keyword == "SCALARS sigma_xy float 1")
+        for (double v : sec.reals) sxy = std::max(sxy, std::abs(v));
+    CHECK(sxy > 0);
+  }
+  TEST_CASE("output: the binary writer's bytes for known numbers (big-endian IEEE single, int32)") {
+    // 1.0f = 0x3F800000, -2.5f = 0xC0200000, 0.1 -> 0x3DCCCCCD (rounded to nearest);
+    // int 9 = 00 00 00 09, -1 = FF FF FF FF
+    VtkWriter w(VtkFormat::Binary, "t", "UNSTRUCTURED_GRID");
+    const size_t head = w.text().size();
+    CHECK(head == std::string("# vtk DataFile Version 2.0\nt\nBINARY\nDATASET UNSTRUCTURED_GRID\n").size());
+    w.reals({1.0, -2.5, 0.1}, 3);
+    w.ints({9, -1}, 1);
+    const std::string want("\x3F\x80\x00\x00\xC0\x20\x00\x00\x3D\xCC\xCC\xCD\n\x00\x00\x00\x09\xFF\xFF\xFF\xFF\n", 22);  // 3 x 4 + 1 + 2 x 4 + 1 bytes
+    CHECK(w.text().substr(head) == want);
+    CHECK(std::string(w.realType()) == "float");
+    VtkWriter t(VtkFormat::Ascii, "t", "UNSTRUCTURED_GRID");
+    t.reals({1.0, -2.5, 0.1}, 3);
+    t.ints({9, -1}, 1);
+    CHECK(t.text().substr(head - 1) == "1 -2.5 0.1\n9\n-1\n");  // "ASCII" is one byte shorter
+    CHECK(std::string(t.realType()) == "double");
   }
 }
