@@ -8,7 +8,7 @@
 
 namespace ample {
 
-void buildFreeSystem(const SpMat& Kt, const std::vector<int>& fd, FreeSystem& S) {
+void extractFreeSystem(const SpMat& Kt, const std::vector<int>& fd, FreeSystem& S) {
   const int nfd = int(fd.size());
   std::vector<int> freeIdx(Kt.rows(), -1);              // global dof -> row of Kt(fd,fd)
   for (int r = 0; r < nfd; ++r) freeIdx[fd[r]] = r;
@@ -22,8 +22,28 @@ void buildFreeSystem(const SpMat& Kt, const std::vector<int>& fd, FreeSystem& S)
   S.Kff.setFromTriplets(trip.begin(), trip.end());      // no duplicates: each value is one e
   S.fromKt.resize(S.Kff.nonZeros());
   for (int e = 0; e < S.Kff.nonZeros(); ++e) S.fromKt[e] = int(S.Kff.valuePtr()[e]);
-  S.lu.analyzePattern(S.Kff);                           // symbolic analysis, once per pattern
-  if (S.choice == LinearSolver::LDLT) S.ldlt.analyzePattern(S.Kff);
+  for (int e = 0; e < S.Kff.nonZeros(); ++e) S.Kff.valuePtr()[e] = Kt.valuePtr()[S.fromKt[e]];
+}
+
+void buildFreeSystem(const SpMat& Kt, const std::vector<int>& fd, FreeSystem& S) {
+  checkSolverBuilt(S.choice);
+  extractFreeSystem(Kt, fd, S);
+  S.luAnalysed = false;                                 // LU (or a fallback) analyses it when needed
+  switch (S.choice) {                                   // symbolic analysis, once per pattern
+    case LinearSolver::LU: break;
+    case LinearSolver::LDLT: S.ldlt.analyzePattern(S.Kff); break;
+#ifdef AMPLE_HAVE_METIS
+    case LinearSolver::LDLT_METIS: S.ldltMetis.analyzePattern(S.Kff); break;
+#endif
+#ifdef AMPLE_HAVE_SUITESPARSE
+    case LinearSolver::CHOLMOD:
+      S.cholmod.cholmod().print = 0;                    // not positive definite: our fallback says so
+      S.cholmod.analyzePattern(S.Kff);
+      break;
+    case LinearSolver::UMFPACK: S.umfpack.analyzePattern(S.Kff); break;
+#endif
+    default: break;                                     // not built: refused above
+  }
   S.fd = fd;
   S.ktOuter.assign(Kt.outerIndexPtr(), Kt.outerIndexPtr() + Kt.outerSize() + 1);
   S.ktInner.assign(Kt.innerIndexPtr(), Kt.innerIndexPtr() + Kt.nonZeros());

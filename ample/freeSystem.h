@@ -5,42 +5,68 @@
 // Kt(fd,fd) duvw(fd) = rhs (seed 002 eq 29) in every Newton-Raphson pass.
 // Within a load step the free dofs fd and Kt's pattern do not change, so
 //   buildFreeSystem  extracts the pattern of Kt(fd,fd) once, remembers where
-//                    each of its values sits in Kt (fromKt) and runs
-//                    SparseLU's symbolic analysis (COLAMD ordering) once;
+//                    each of its values sits in Kt (fromKt) and runs the
+//                    chosen solver's symbolic analysis (its ordering) once;
 //   refillFreeSystem copies Kt's values into it for each pass, and linSolve
 //                    only refactorises numerically.
 // The main loop keeps one FreeSystem for the whole run: a load step whose fd
 // and Kt pattern (compared entry by entry, O(nnz)) are those of the step
 // before (no point entered or left a cell) keeps the analysis too.
-// choice = LDLT (setup parameter solver=LDLT, beyond the design card):
-// Eigen's SimplicialLDLT (AMD ordering) is analysed as well and used in every
-// pass whose Kt(fd,fd) is symmetric to 1e-12 of its largest entry; a pass
-// that is not falls back to SparseLU, said once on stderr (fallbacks counts).
+// choice (setup parameter solver=, docs/scaling.md "The sparse solve"):
+//   LU          Eigen's SparseLU, COLAMD ordering (the design card's; measured
+//               against AMD and METIS in docs/scaling.md: the least fill)
+//   LDLT        Eigen's SimplicialLDLT, AMD ordering          } used in every pass whose
+//   LDLT_METIS  the same with METIS (built with AMPLE_METIS)  } Kt(fd,fd) is symmetric
+//   CHOLMOD     CHOLMOD supernodal LL^T (AMPLE_SUITESPARSE)   } to 1e-12, else SparseLU
+//   UMFPACK     UMFPACK's LU (AMPLE_SUITESPARSE)
+// A symmetric choice whose pass is not symmetric (or whose factorisation
+// fails, e.g. LL^T of an indefinite Kt) falls back to SparseLU for that pass,
+// said once on stderr (fallbacks counts); SparseLU is analysed when first needed.
 // What it saves: the extraction and the ordering in every pass (see the
 // closing figures in docs/structure.md).
 // Inputs:  Kt (nDoF x nDoF) · fd (nfd free dofs, ascending) · S.choice
-// Outputs: S (FreeSystem): fd, pattern, fromKt, Kff (nfd x nfd), lu (and ldlt) analysed
+// Outputs: S (FreeSystem): fd, pattern, fromKt, Kff (nfd x nfd), the chosen solver analysed
 // Tests:   tests/test_linSolve.cpp
 //--------------------------------------------------------------------------
 #pragma once
+#include "solverChoice.h"
 #include "stiffnessPattern.h"
 #include <Eigen/SparseCholesky>
 #include <Eigen/SparseLU>
+#include <string>
 #include <vector>
+#ifdef AMPLE_HAVE_METIS
+#include <iostream>  // Eigen/MetisSupport uses std::cerr without including it
+#include <Eigen/MetisSupport>
+#endif
+#ifdef AMPLE_HAVE_SUITESPARSE
+#include <Eigen/CholmodSupport>
+#include <Eigen/UmfPackSupport>
+#endif
 
 namespace ample {
 
 struct FreeSystem {
-  LinearSolver choice = LinearSolver::LU;      // LU (default) or LDLT when symmetric
+  LinearSolver choice = LinearSolver::LU;      // solver= (above)
   std::vector<int> fd;                         // free dofs it was built for
   std::vector<int> ktOuter, ktInner;           // the Kt pattern it was built for
   std::vector<int> fromKt;                     // Kff value e is Kt value fromKt[e]
   SpMat Kff;                                   // Kt(fd,fd)
-  Eigen::SparseLU<SpMat, Eigen::COLAMDOrdering<int>> lu;
-  Eigen::SimplicialLDLT<SpMat> ldlt;           // analysed only for choice = LDLT
-  int builds = 0, fallbacks = 0;               // analyses run; LDLT passes solved by LU
+  Eigen::SparseLU<SpMat, Eigen::COLAMDOrdering<int>> lu;  // LU, and the symmetric choices' fallback
+  bool luAnalysed = false;                     // lu's analysis is of this pattern
+  Eigen::SimplicialLDLT<SpMat> ldlt;           // LDLT (AMD ordering)
+#ifdef AMPLE_HAVE_METIS
+  Eigen::SimplicialLDLT<SpMat, Eigen::Lower, Eigen::MetisOrdering<int>> ldltMetis;  // LDLT_METIS
+#endif
+#ifdef AMPLE_HAVE_SUITESPARSE
+  Eigen::CholmodSupernodalLLT<SpMat> cholmod;  // CHOLMOD
+  Eigen::UmfPackLU<SpMat> umfpack;             // UMFPACK
+#endif
+  int builds = 0, fallbacks = 0;               // analyses run; symmetric passes solved by LU
 };
 
+// S.Kff = Kt(fd,fd) and S.fromKt, no analysis (buildFreeSystem's first half; the benchmark's)
+void extractFreeSystem(const SpMat& Kt, const std::vector<int>& fd, FreeSystem& S);
 void buildFreeSystem(const SpMat& Kt, const std::vector<int>& fd, FreeSystem& S);
 // Kt(fd,fd) with the values of Kt; builds S first when fd or Kt's pattern changed
 void refillFreeSystem(const SpMat& Kt, const std::vector<int>& fd, FreeSystem& S);

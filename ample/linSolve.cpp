@@ -17,23 +17,53 @@ static bool symmetric(const SpMat& K) {
   return D.nonZeros() == 0 || D.coeffs().cwiseAbs().maxCoeff() <= 1e-12 * big;
 }
 
-// numeric factorisation of S.Kff and the solve: SparseLU, or (choice LDLT) SimplicialLDLT
-// when Kff is symmetric and its solve is accurate to 1e-10 (else LU); RunError when LU fails
+// a symmetric solver (LDLT, LDLT_METIS, CHOLMOD) factorises K (no pivoting) and solves;
+// false when it fails (an indefinite K for LL^T) or its solve is not accurate to 1e-10
+template <class SymmetricSolver>
+static bool symmetricSolve(SymmetricSolver& s, const SpMat& K, const Eigen::VectorXd& rhs, Eigen::VectorXd& x) {
+  s.factorize(K);
+  if (s.info() != Eigen::Success) return false;
+  x = s.solve(rhs);
+  return (K * x - rhs).norm() <= 1e-10 * rhs.norm();
+}
+
+// the chosen symmetric solver on S.Kff; false for LU and UMFPACK
+static bool chosenSymmetricSolve(FreeSystem& S, const Eigen::VectorXd& rhs, Eigen::VectorXd& x) {
+  switch (S.choice) {
+    case LinearSolver::LDLT: return symmetricSolve(S.ldlt, S.Kff, rhs, x);
+#ifdef AMPLE_HAVE_METIS
+    case LinearSolver::LDLT_METIS: return symmetricSolve(S.ldltMetis, S.Kff, rhs, x);
+#endif
+#ifdef AMPLE_HAVE_SUITESPARSE
+    case LinearSolver::CHOLMOD: return symmetricSolve(S.cholmod, S.Kff, rhs, x);
+#endif
+    default: return false;
+  }
+}
+
+// numeric factorisation of S.Kff and the solve: SparseLU (solver=LU), UMFPACK, or a symmetric
+// solver when Kff is symmetric and its solve succeeds (else SparseLU); RunError when LU fails
 static Eigen::VectorXd factorisedSolve(FreeSystem& S, const Eigen::VectorXd& rhs) {
   const std::string singular = "): the problem is singular, e.g. a rigid-body mode without enough "
                                "boundary conditions or a nearly empty cell";
-  if (S.choice == LinearSolver::LDLT) {
-    if (symmetric(S.Kff)) {  // without pivoting: a poor solve of an indefinite Kff goes to LU
-      S.ldlt.factorize(S.Kff);
-      if (S.ldlt.info() == Eigen::Success) {
-        Eigen::VectorXd x = S.ldlt.solve(rhs);
-        if ((S.Kff * x - rhs).norm() <= 1e-10 * rhs.norm()) return x;
-      }
-    }
-    if (S.fallbacks++ == 0)
-      std::fprintf(stderr, "solver=LDLT: Kt(fd,fd) not symmetric to 1e-12 or its LDLT solve inexact: "
-                           "SparseLU solves such passes\n");
+#ifdef AMPLE_HAVE_SUITESPARSE
+  if (S.choice == LinearSolver::UMFPACK) {
+    S.umfpack.factorize(S.Kff);                         // numeric factorisation only
+    if (S.umfpack.info() != Eigen::Success)
+      throw RunError("UMFPACK could not factorise the stiffness Kt(fd,fd) (status " +
+                     std::to_string(S.umfpack.umfpackFactorizeReturncode()) + singular);
+    return S.umfpack.solve(rhs);
   }
+#endif
+  if (S.choice != LinearSolver::LU) {                   // LDLT, LDLT_METIS, CHOLMOD
+    Eigen::VectorXd x;
+    if (symmetric(S.Kff) && chosenSymmetricSolve(S, rhs, x)) return x;
+    if (S.fallbacks++ == 0)
+      std::fprintf(stderr, "solver=%s: Kt(fd,fd) not symmetric to 1e-12, or its factorisation failed or was "
+                           "inexact: SparseLU solves such passes\n", solverNames()[size_t(S.choice)].c_str());
+  }
+  if (!S.luAnalysed) S.lu.analyzePattern(S.Kff);        // once per pattern
+  S.luAnalysed = true;
   S.lu.factorize(S.Kff);                                // numeric factorisation only
   if (S.lu.info() != Eigen::Success)
     throw RunError("SparseLU could not factorise the stiffness Kt(fd,fd) (" + S.lu.lastErrorMessage() + singular);

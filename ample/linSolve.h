@@ -5,8 +5,9 @@
 // prescribed displacement increments enter at NRit == 1 and are zero after:
 //   duvw(bc) = prescribed, duvw(fd) = Kt(fd,fd) \ (oobf(fd) - Kt(fd,bc) duvw(bc)),
 //   drct(bc) = Kt(bc,:) duvw - oobf(bc).
-// Solved with Eigen's SparseLU (COLAMD ordering); a singular or failed
-// factorisation throws RunError naming the cause. With a cache (FreeSystem,
+// Solved with Eigen's SparseLU (COLAMD ordering) or the solver chosen by
+// solver= (freeSystem.h); a singular or failed factorisation throws RunError
+// naming the cause. With a cache (FreeSystem,
 // a fast part: freeSystem.h) the pattern of Kt(fd,fd) and the symbolic
 // analysis are reused while fd and Kt's pattern stay the same.
 // Inputs:  bc (nbc) · Kt (nDoF x nDoF) · oobf (nDoF) · NRit · fd (nfd) · cache (optional)

@@ -28,8 +28,11 @@ constexpr int MAXE = 9;      // most cells one point domain may overlap (3 x 3)
 enum class MpType { MPM = 1, GIMP = 2, CPDI1 = 3, CPDI2 = 4 };  // seed 002: mpType (+ seed 001)
 enum class CmType { Elastic = 1, VonMises = 2 };                 // seed 002: cmType
 enum class Formulation { UL = 1, PC = 2, SS = 3 };  // updated / previously converged Lagrangian
-enum class LinearSolver { LU = 0, LDLT = 1 };       // SparseLU (design card) / SimplicialLDLT if symmetric
                                                     // (seed 000), small strain (seed 003 sec 2)
+enum class LinearSolver {                   // the sparse solve of Kt(fd,fd) (freeSystem.h)
+  LU = 0, LDLT = 1, LDLT_METIS = 2, CHOLMOD = 3, UMFPACK = 4
+};  // SparseLU (design card) · SimplicialLDLT if symmetric · the same with METIS (-DAMPLE_METIS=ON) ·
+    // CHOLMOD supernodal LL^T if symmetric · UMFPACK LU (both -DAMPLE_SUITESPARSE=ON)
 enum class DomainUpdate {                   // GIMP domain updating, seed 000 sec 6.4, table 2
   None = 0, DetF = 1, Fii = 2, Uii = 3, Corner = 4, FiiVol = 5, FiiVolInc = 6
 };  //  -     eq 32     eq 33    eq 34    eqs 35-37   eq 38      eq 39

@@ -6,6 +6,7 @@
 #include "setupHelpers.h"
 #include "ample/detMpPos.h"
 #include "ample/errors.h"
+#include "ample/solverChoice.h"
 #include "ample/shapefunc.h"
 #include <algorithm>
 #include <cmath>
@@ -21,6 +22,7 @@ Analysis baseAnalysis(const Params& P) {
   an.tol = get(P, "tol");
   an.NRitMax = int(get(P, "NRitMax"));
   an.solver = LinearSolver(int(get(P, "solver")));
+  checkSolverBuilt(an.solver);                  // a choice this build lacks: InputError
   an.substeps = int(get(P, "substeps"));
   an.ghost = get(P, "ghost");
   an.formulation = Formulation(int(get(P, "formulation")));

@@ -8,6 +8,7 @@
 //--------------------------------------------------------------------------
 #include "setups.h"
 #include "ample/errors.h"
+#include "ample/solverChoice.h"
 #include <cmath>
 #include <sstream>
 
@@ -94,9 +95,11 @@ Params commonParams(int lstps) {
       Param("lstps", lstps).integer(1, 1e6).help("number of equal load steps"),
       Param("tol", 1e-9).above(0).below(1).help("Newton-Raphson tolerance on fErr (eq 35)"),
       Param("NRitMax", 10).integer(2, 1000).help("most Newton-Raphson passes per load step"),
-      Param("solver", 0).choice(0, {"LU", "LDLT"})
+      Param("solver", 0).choice(0, solverNames())
           .help("sparse solver of Kt(fd,fd): LU = Eigen's SparseLU (COLAMD); LDLT = Eigen's "
-                "SimplicialLDLT (AMD) in every pass where Kt(fd,fd) is symmetric, else LU"),
+                "SimplicialLDLT (AMD) in every pass where Kt(fd,fd) is symmetric, else LU; LDLT_METIS "
+                "the same with METIS (-DAMPLE_METIS=ON); CHOLMOD = supernodal LL^T when symmetric, "
+                "UMFPACK = LU (-DAMPLE_SUITESPARSE=ON); this build: " + solversBuilt()),
       Param("substeps", 0).integer(0, 30)
           .help("remedy: halvings of a load step allowed when Newton fails (0 = the paper's algorithm)"),
       Param("ghost", 0).range(0, 1e3)

@@ -1,11 +1,19 @@
 // Tests of linSolve (seed 002 eq 29): skipped at NRit 0, prescribed
 // increments at NRit 1 only, equilibrium of the free dofs, reactions, dofs
-// that are neither free nor prescribed left at zero, a singular system refused.
+// that are neither free nor prescribed left at zero, a singular system refused;
+// each solver= of the build (solverChoice.h) against SparseLU, and the refusal of
+// the ones the build lacks (docs/scaling.md, "The sparse solve").
 #include "ample/errors.h"
+#include "ample/detFDoFs.h"
 #include "ample/linSolve.h"
+#include "ample/solverChoice.h"
 #include "testProblems.h"
 #include <doctest/doctest.h>
 #include <cmath>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <sys/wait.h>
 
 using namespace ample;
 
@@ -24,6 +32,35 @@ SpMat chain() {
   SpMat K(5, 5);
   K.setFromTriplets(t.begin(), t.end());
   return K;
+}
+
+// the solver= choices of this build but LU, and the ones it lacks
+std::vector<LinearSolver> solvers(bool builtOnes) {
+  std::vector<LinearSolver> v;
+  for (size_t k = 1; k < solverNames().size(); ++k)
+    if (solverBuilt(LinearSolver(k)) == builtOnes) v.push_back(LinearSolver(k));
+  return v;
+}
+bool everySolverBuilt() { return solvers(false).empty(); }
+
+// Kt and fd of load step 1 of the collapse (a = 2: h = 1 m, 3 x 3 points per cell; uvw = 0,
+// the elastic tangent), as ample.cpp's solve() builds them before its first linSolve
+struct CollapseStep1 {
+  SpMat Kt;
+  std::vector<int> fd;
+};
+CollapseStep1 collapseStep1() {
+  const Setup* s = findSetup("collapse");
+  REQUIRE(s != nullptr);
+  Params P = s->params();
+  Analysis an = s->setupGrid(P);
+  const int nDoF = an.mesh.nDoF();
+  elemMPinfo(an.mesh, an.mpData, an.fem);
+  CollapseStep1 c{SpMat(), detFDoFs(an.mesh, an.mpData)};
+  DetMPsOut mps{Eigen::VectorXd::Zero(nDoF), stiffnessPattern(nDoF, an.mpData)};
+  detMPs(Eigen::VectorXd::Zero(nDoF), an.mpData, an.formulation, mps);
+  c.Kt = mps.Kt;
+  return c;
 }
 }  // namespace
 
@@ -129,20 +166,107 @@ TEST_SUITE("linSolve") {
     const Eigen::VectorXd r = K * o.duvw - oobf;
     for (int d = 1; d < 5; ++d) CHECK(std::abs(r(d)) <= 1e-13);
   }
-  // measured: largest stress difference 5.0e-14 of the largest stress (collapse a = 1, von
-  // Mises, 40 steps; Kt(fd,fd) symmetric in every pass, no fallback)
-  TEST_CASE("linSolve: a whole run with solver=LDLT equals SparseLU's to 1e-10") {
-    RunLog l1, l2;
+  // measured: largest stress difference 5.0e-14 of the largest stress with LDLT (collapse
+  // a = 1, von Mises, 40 steps; Kt(fd,fd) symmetric in every pass, no fallback); LDLT_METIS
+  // 4.9e-14, CHOLMOD 4.6e-14, UMFPACK 4.8e-14 (built with AMPLE_METIS and AMPLE_SUITESPARSE)
+  TEST_CASE("linSolve: a whole run with each solver= of this build equals SparseLU's to 1e-10") {
+    RunLog l1;
     const Analysis lu = testing::runSetup("collapse", {{"a", 1}}, l1);
-    const Analysis ldlt = testing::runSetup("collapse", {{"a", 1}, {"solver", 1}}, l2);
-    REQUIRE(l1.lastConverged == l2.lastConverged);
-    double d = 0, big = 0;
-    for (size_t p = 0; p < lu.mpData.size(); ++p) {
-      d = std::max(d, (lu.mpData[p].sig - ldlt.mpData[p].sig).cwiseAbs().maxCoeff());
-      big = std::max(big, lu.mpData[p].sig.cwiseAbs().maxCoeff());
+    for (LinearSolver choice : solvers(true)) {
+      const std::string name = solverNames()[size_t(choice)];
+      CAPTURE(name);
+      RunLog l2;
+      const Analysis other = testing::runSetup("collapse", {{"a", 1}, {"solver", int(choice)}}, l2);
+      REQUIRE(l1.lastConverged == l2.lastConverged);
+      double d = 0, big = 0;
+      for (size_t p = 0; p < lu.mpData.size(); ++p) {
+        d = std::max(d, (lu.mpData[p].sig - other.mpData[p].sig).cwiseAbs().maxCoeff());
+        big = std::max(big, lu.mpData[p].sig.cwiseAbs().maxCoeff());
+      }
+      MESSAGE("collapse a = 1: LU vs ", name, " stress ", d / big);
+      CHECK(d <= 1e-10 * big);
     }
-    MESSAGE("collapse a = 1: LU vs LDLT stress ", d / big);
-    CHECK(d <= 1e-10 * big);
+  }
+  // measured (a = 2, nfd = 144): 1.4e-15 (LDLT, LDLT_METIS, CHOLMOD), 1.6e-15 (UMFPACK); the symmetric
+  // choices need no fallback on this symmetric Kt
+  TEST_CASE("linSolve: each solver= of this build solves the collapse's Kt(fd,fd) as SparseLU/COLAMD does, to 1e-10") {
+    const CollapseStep1 c = collapseStep1();
+    REQUIRE(c.fd.size() == 144);                          // 9 x 9 nodes less the supports
+    Eigen::VectorXd oobf(c.Kt.rows());
+    for (int i = 0; i < oobf.size(); ++i) oobf(i) = std::sin(i + 1.0);  // any load
+    FreeSystem lu;
+    const LinSolveOut a = linSolve({}, c.Kt, oobf, 2, c.fd, &lu);
+    for (LinearSolver choice : solvers(true)) {
+      CAPTURE(solverNames()[size_t(choice)]);
+      FreeSystem S;
+      S.choice = choice;
+      const LinSolveOut b = linSolve({}, c.Kt, oobf, 2, c.fd, &S);
+      MESSAGE(solverNames()[size_t(choice)], ": ", (a.duvw - b.duvw).norm() / a.duvw.norm());
+      CHECK((a.duvw - b.duvw).norm() <= 1e-10 * a.duvw.norm());
+      CHECK(S.fallbacks == 0);
+      CHECK(S.builds == 1);
+    }
+  }
+  // the chain's analytic solution with every choice; the unsymmetric chain goes to SparseLU
+  // for the symmetric ones (a fallback, counted); the unconstrained chain is refused by all
+  TEST_CASE("linSolve: each solver= of this build: the chain's analytic solution, the unsymmetric fallback, the singular chain") {
+    Eigen::VectorXd oobf(5);
+    oobf << 0.7, 0.5, -1.0, 0.25, 2.0;
+    FreeSystem lu;
+    const LinSolveOut a = linSolve({{0, 0.1}}, chain(), oobf, 1, {1, 2, 3, 4}, &lu);
+    SpMat K = chain();
+    K.coeffRef(2, 3) += 0.5;                              // same pattern, no longer symmetric
+    for (LinearSolver choice : solvers(true)) {
+      CAPTURE(solverNames()[size_t(choice)]);
+      FreeSystem S;
+      S.choice = choice;
+      const LinSolveOut b = linSolve({{0, 0.1}}, chain(), oobf, 1, {1, 2, 3, 4}, &S);
+      CHECK((a.duvw - b.duvw).norm() <= 1e-14 * a.duvw.norm());
+      const LinSolveOut c = linSolve({{0, 0.1}}, K, oobf, 1, {1, 2, 3, 4}, &S);
+      const Eigen::VectorXd r = K * c.duvw - oobf;
+      for (int d = 1; d < 5; ++d) CHECK(std::abs(r(d)) <= 1e-13);
+      CHECK(S.fallbacks == (choice == LinearSolver::UMFPACK ? 0 : 1));
+      CHECK(S.builds == 1);
+      FreeSystem T;
+      T.choice = choice;
+      CHECK_THROWS_AS(linSolve({}, chain(), Eigen::VectorXd::Ones(5), 1, {0, 1, 2, 3, 4}, &T), RunError);
+    }
+  }
+  // a choice this build lacks: InputError naming the parameter, the choices built and the
+  // CMake option; the program exits 2 before any work (nothing to refuse when all are built)
+  TEST_CASE("linSolve: a solver= this build lacks is refused, naming the choices built and the CMake option" *
+            doctest::skip(everySolverBuilt())) {
+    const Setup* s = findSetup("collapse");
+    REQUIRE(s != nullptr);
+    for (LinearSolver choice : solvers(false)) {
+      const std::string name = solverNames()[size_t(choice)];
+      const std::string option = choice == LinearSolver::LDLT_METIS ? "-DAMPLE_METIS=ON" : "-DAMPLE_SUITESPARSE=ON";
+      CAPTURE(name);
+      Params P = s->params();
+      setDefault(P, "solver", int(choice));
+      std::string message;
+      try {
+        s->setupGrid(P);
+      } catch (const InputError& e) {
+        message = e.what();
+      }
+      CHECK(message.find("solver=" + name + " is not in this build") != std::string::npos);
+      CHECK(message.find("it has solver=" + solversBuilt()) != std::string::npos);
+      CHECK(message.find(option) != std::string::npos);
+      FreeSystem S;                                       // also when set in code, not by the setup
+      S.choice = choice;
+      CHECK_THROWS_AS(linSolve({{0, 0.1}}, chain(), Eigen::VectorXd::Ones(5), 1, {1, 2, 3, 4}, &S), InputError);
+      const std::string out = std::string(AMPLE_TEST_TMP) + "/solver_refused";
+      std::filesystem::create_directories(AMPLE_TEST_TMP);
+      const std::string cmd = std::string(AMPLE_BINARY) + " collapse a=1 solver=" + name + " --quiet --out " +
+                              out + " >/dev/null 2>" + out + ".err";
+      const int st = std::system(cmd.c_str());
+      CHECK((WIFEXITED(st) ? WEXITSTATUS(st) : -1) == 2);
+      std::string line;
+      std::getline(std::ifstream(out + ".err"), line);
+      CHECK(line == "ample: " + message);
+      CHECK(!std::filesystem::exists(out + "/summary.json"));
+    }
   }
 }
 

@@ -1,0 +1,43 @@
+# solverLibraries.cmake — optional libraries of the sparse solve (docs/scaling.md, "The sparse solve")
+#
+#   -DAMPLE_METIS=ON        METIS nested-dissection ordering (apt-get install libmetis-dev):
+#                           solver=LU_METIS and solver=LDLT_METIS (Eigen's MetisOrdering)
+#   -DAMPLE_SUITESPARSE=ON  SuiteSparse (apt-get install libsuitesparse-dev):
+#                           solver=CHOLMOD (supernodal LL^T) and solver=UMFPACK
+#
+# Both OFF by default: the default build uses Eigen only. Each ON option defines
+# AMPLE_HAVE_METIS / AMPLE_HAVE_SUITESPARSE on amplecore (and so on every program
+# linked to it); a library that is asked for and not found stops the configure.
+option(AMPLE_METIS "METIS orderings for the sparse solve (solver=LU_METIS, LDLT_METIS)" OFF)
+option(AMPLE_SUITESPARSE "SuiteSparse solvers for the sparse solve (solver=CHOLMOD, UMFPACK)" OFF)
+
+if(AMPLE_METIS)
+  find_path(METIS_INCLUDE_DIR metis.h)
+  find_library(METIS_LIBRARY metis)
+  if(NOT METIS_INCLUDE_DIR OR NOT METIS_LIBRARY)
+    message(FATAL_ERROR "AMPLE_METIS=ON: metis.h or libmetis not found (Debian: apt-get install libmetis-dev)")
+  endif()
+  target_include_directories(amplecore PUBLIC ${METIS_INCLUDE_DIR})
+  target_link_libraries(amplecore PUBLIC ${METIS_LIBRARY})
+  target_compile_definitions(amplecore PUBLIC AMPLE_HAVE_METIS)
+  message(STATUS "AMPLE_METIS: ${METIS_LIBRARY}")
+endif()
+
+if(AMPLE_SUITESPARSE)
+  find_path(SUITESPARSE_INCLUDE_DIR cholmod.h PATH_SUFFIXES suitesparse)
+  set(SUITESPARSE_LIBRARIES "")
+  foreach(lib cholmod umfpack amd colamd suitesparseconfig)
+    find_library(SUITESPARSE_${lib}_LIBRARY ${lib})
+    if(NOT SUITESPARSE_${lib}_LIBRARY)
+      message(FATAL_ERROR "AMPLE_SUITESPARSE=ON: lib${lib} not found (Debian: apt-get install libsuitesparse-dev)")
+    endif()
+    list(APPEND SUITESPARSE_LIBRARIES ${SUITESPARSE_${lib}_LIBRARY})
+  endforeach()
+  if(NOT SUITESPARSE_INCLUDE_DIR)
+    message(FATAL_ERROR "AMPLE_SUITESPARSE=ON: cholmod.h not found (Debian: apt-get install libsuitesparse-dev)")
+  endif()
+  target_include_directories(amplecore PUBLIC ${SUITESPARSE_INCLUDE_DIR})
+  target_link_libraries(amplecore PUBLIC ${SUITESPARSE_LIBRARIES})
+  target_compile_definitions(amplecore PUBLIC AMPLE_HAVE_SUITESPARSE)
+  message(STATUS "AMPLE_SUITESPARSE: ${SUITESPARSE_LIBRARIES}")
+endif()
