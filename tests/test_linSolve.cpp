@@ -57,7 +57,8 @@ CollapseStep1 collapseStep1() {
   const int nDoF = an.mesh.nDoF();
   elemMPinfo(an.mesh, an.mpData, an.fem);
   CollapseStep1 c{SpMat(), detFDoFs(an.mesh, an.mpData)};
-  DetMPsOut mps{Eigen::VectorXd::Zero(nDoF), stiffnessPattern(nDoF, an.mpData)};
+  DetMPsOut mps;
+  mps.Kt = stiffnessPattern(nDoF, an.mpData);
   detMPs(Eigen::VectorXd::Zero(nDoF), an.mpData, an.formulation, mps);
   c.Kt = mps.Kt;
   return c;

@@ -206,7 +206,8 @@ SpMat collapseKff(int a, int mp, long& nmp) {
   const int nDoF = an.mesh.nDoF();
   elemMPinfo(an.mesh, an.mpData, an.fem);
   const std::vector<int> fd = detFDoFs(an.mesh, an.mpData);
-  DetMPsOut mps{Eigen::VectorXd::Zero(nDoF), stiffnessPattern(nDoF, an.mpData)};
+  DetMPsOut mps;
+  mps.Kt = stiffnessPattern(nDoF, an.mpData);
   detMPs(Eigen::VectorXd::Zero(nDoF), an.mpData, an.formulation, mps);
   FreeSystem S;
   extractFreeSystem(mps.Kt, fd, S);
