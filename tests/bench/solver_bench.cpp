@@ -3,9 +3,9 @@
 //--------------------------------------------------------------------------
 // Issue 14, "The sparse solve" (docs/scaling.md). For the collapse (seed 002
 // sec 5.3) at grid refinement a (h = 2 m / a) with mp x mp points per cell it
-// builds the free stiffness Kt(fd,fd) of load step 1 as the main loop does
+// builds the free stiffness Kt(fd,fd) of load step 1 (or later) as the main loop does
 // (setupGrid, elemMPinfo, detFDoFs, stiffnessPattern, detMPs at uvw = 0: the
-// elastic tangent; a plastic state has the same pattern) and solves
+// elastic tangent; --after: a later step, see collapseKff) and solves
 // Kt(fd,fd) x = b with b = Kt(fd,fd) x*, x*_i = sin(i + 1), by each solver:
 //   LU_COLAMD, LU_AMD, LU_METIS    Eigen's SparseLU with that column ordering
 //   LU_AMD_T0.1                    SparseLU, AMD, diagonal pivots down to 0.1 of the largest
@@ -22,9 +22,10 @@
 // holding Kt(fd,fd): `base_MB`) and its failures are its own. A child that
 // passes --limit seconds is stopped (did not finish); one that needs more
 // than --mem GB of address space fails to allocate (did not fit).
-// Usage:   solver_bench [--a 2,4,8,16,32] [--mp 6] [--reps 3] [--cases A,B]
+// Usage:   solver_bench [--a 2,4,8,16,32] [--mp 6] [--after 0] [--reps 3] [--cases A,B]
 //                       [--limit 900] [--mem 12] [--out docs/results/ordering.csv]
-// Outputs: one CSV row per run: a, nmp, nfd, nnz of Kt(fd,fd), solver,
+// --after N: the Kt(fd,fd) at the start of load step N + 1 (N steps solved first).
+// Outputs: one CSV row per run: a, after_steps, nmp, nfd, nnz of Kt(fd,fd), solver,
 //          repetition, status (ok / time limit / no memory / failed), analyse_s,
 //          factorise_s, solve_s, fill (nonzeros of L+U or of L), factor_MB
 //          (fill x 12 bytes: a double and an index), peak_MB, base_MB, the
@@ -192,16 +193,26 @@ Timing runCase(const std::string& name, const SpMat& K, const Eigen::VectorXd& b
 }
 
 //--------------------------------------------------------------------------
-// collapseKff — Kt(fd,fd) of load step 1 of the collapse at refinement a
+// collapseKff — Kt(fd,fd) of the collapse at refinement a, at the start of a load step
 //--------------------------------------------------------------------------
-// The calls of ample/ample.cpp's solve() up to the first detMPs (uvw = 0).
-// Inputs:  a (h = 2 m / a) · mp (points per cell in each direction)
+// The calls of ample/ample.cpp's solve() up to the first detMPs (uvw = 0), after
+// `after` load steps solved (solver=LDLT, NRitMax=20): after = 0 is load step 1 (the elastic
+// tangent, every GIMP domain inside its cell: the sparsest pattern); after = 39 the
+// state of the last step (domains across cell edges: more coupled nodes, plastic)
+// Inputs:  a (h = 2 m / a) · mp (points per cell in each direction) · after
 // Outputs: Kt(fd,fd) · nmp (number of points)
 //--------------------------------------------------------------------------
-SpMat collapseKff(int a, int mp, long& nmp) {
+SpMat collapseKff(int a, int mp, int after, long& nmp) {
   using namespace ample;
-  const CliRequest req = parseArgs({"collapse", "a=" + std::to_string(a), "mp=" + std::to_string(mp)});
+  const CliRequest req = parseArgs({"collapse", "a=" + std::to_string(a), "mp=" + std::to_string(mp),
+                                    "solver=LDLT", "NRitMax=20"});  // a = 16 needs 11 passes in step 36
   Analysis an = req.setup->setupGrid(req.params);
+  if (after > 0) {
+    RunLog log;
+    RunOptions opt;
+    opt.quiet = true, opt.vtkEvery = 0, opt.lastStep = after;
+    solve(an, log, opt);
+  }
   nmp = long(an.mpData.size());
   const int nDoF = an.mesh.nDoF();
   elemMPinfo(an.mesh, an.mpData, an.fem);
@@ -216,7 +227,7 @@ SpMat collapseKff(int a, int mp, long& nmp) {
 
 struct Options {
   std::vector<int> a{2, 4, 8, 16, 32};
-  int mp = 6, reps = 3, limit = 900;
+  int mp = 6, reps = 3, limit = 900, after = 0;
   double memGB = 12;
   std::vector<std::string> cases{"LU_COLAMD",  "LU_AMD",      "LU_AMD_T0.1",  "LU_AMD_SYM", "LU_METIS", "LDLT_AMD",
                                  "LDLT_METIS", "CHOLMOD_LLT", "CHOLMOD_LDLT", "UMFPACK"};
@@ -237,6 +248,7 @@ Options parse(int argc, char** argv) {
     if (k == "--a") { o.a.clear(); for (const auto& w : split(v)) o.a.push_back(std::stoi(w)); }
     else if (k == "--mp") o.mp = std::stoi(v);
     else if (k == "--reps") o.reps = std::stoi(v);
+    else if (k == "--after") o.after = std::stoi(v);
     else if (k == "--limit") o.limit = std::stoi(v);
     else if (k == "--mem") o.memGB = std::stod(v);
     else if (k == "--cases") o.cases = split(v);
@@ -304,12 +316,12 @@ int main(int argc, char** argv) {
   const Options o = parse(argc, argv);
   std::ofstream csv(o.out);
   if (!csv) { std::cerr << "solver_bench: cannot write " << o.out << "\n"; return 1; }
-  csv << "a,nmp,nfd,nnz_K,solver,rep,status,analyse_s,factorise_s,solve_s,fill,factor_MB,peak_MB,base_MB,"
+  csv << "a,after_steps,nmp,nfd,nnz_K,solver,rep,status,analyse_s,factorise_s,solve_s,fill,factor_MB,peak_MB,base_MB,"
          "error,residual,ordering_chosen\n";
   for (int a : o.a) {
     long nmp = 0;
     const double t0 = now();
-    const SpMat K = collapseKff(a, o.mp, nmp);  // the analysis is freed on return
+    const SpMat K = collapseKff(a, o.mp, o.after, nmp);  // the analysis is freed on return
     malloc_trim(0);
     const double build = now() - t0, base = residentMB();
     Eigen::VectorXd xStar(K.rows());
@@ -323,8 +335,8 @@ int main(int argc, char** argv) {
         double peak = 0;
         const std::string status = forkedCase(name, K, b, xStar, o, t, peak);
         char line[512];
-        std::snprintf(line, sizeof line, "%d,%ld,%ld,%ld,%s,%d,%s,%.4g,%.4g,%.4g,%.0f,%.1f,%.0f,%.0f,%.2g,%.2g,%s\n",
-                      a, nmp, long(K.rows()), long(K.nonZeros()), name.c_str(), rep, status.c_str(),
+        std::snprintf(line, sizeof line, "%d,%d,%ld,%ld,%ld,%s,%d,%s,%.4g,%.4g,%.4g,%.0f,%.1f,%.0f,%.0f,%.2g,%.2g,%s\n",
+                      a, o.after, nmp, long(K.rows()), long(K.nonZeros()), name.c_str(), rep, status.c_str(),
                       t.analyse, t.factorise, t.solve, t.fill, t.fill * 12 / 1048576.0, peak, base, t.error,
                       t.residual, t.note.c_str());
         csv << line << std::flush;
