@@ -193,9 +193,11 @@ void detMPs(const Eigen::VectorXd& uvw, std::vector<MaterialPoint>& mpData, Form
   static const Matrix3d none = Matrix3d::Identity();            // SS: no bEn
   const int nt = pointThreads(np);
   if (nt == 1) {                                                // the point loop
-    for (int p = 0; p < np; ++p)
-      addPoint(uvw, out.bEn.empty() ? none : out.bEn[p], form, mpData[p], out.Kt, out.blocked,
-               out.fint, out.Kt.valuePtr());
+    for (int p = 0; p < np; ++p) {
+      MaterialPoint& mp = mpData[p];                            // the point (gdb: p mp)
+      const Matrix3d& bEn = out.bEn.empty() ? none : out.bEn[p];
+      addPoint(uvw, bEn, form, mp, out.Kt, out.blocked, out.fint, out.Kt.valuePtr());
+    }
     return;
   }
   // the same loop on nt threads (AMPLE_OPENMP): thread t takes the points

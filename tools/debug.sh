@@ -47,7 +47,7 @@ exe="$root/build/debug/ample"
 
 # detMPs: stop where the loop has its point, not at the entry (no `mp` there yet)
 if [ "$where" = detMPs ]; then
-  line=$(grep -n 'for (MaterialPoint& mp : mpData)' "$root/ample/detMPs.cpp" | tail -1 | cut -d: -f1)
+  line=$(grep -n 'MaterialPoint& mp = mpData\[p\];' "$root/ample/detMPs.cpp" | tail -1 | cut -d: -f1)
   where="detMPs.cpp:$((line + 1))"
 fi
 
