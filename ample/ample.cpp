@@ -58,7 +58,8 @@ static double normalisedResidual(const Eigen::VectorXd& oobf, const Eigen::Vecto
                                  const Eigen::VectorXd& frct, const Eigen::VectorXd& frctLast, int NRit);
 static void checkConverged(const Analysis& an, const RunLog& log, int lstp, int NRit, double fErr,
                            const Eigen::VectorXd& uvw, const Eigen::VectorXd& load, bool acceptFloor);
-static void recordStep(RunLog& log, const Increment& inc, int NRit, double fErr, bool converged);
+static void recordStep(RunLog& log, const Increment& inc, int NRit, double fErr, const FreeSystem& Kff,
+                       bool converged);
 
 int ample(const Setup& setup, const Params& P, const RunOptions& opt) {
   RunLog log;
@@ -121,11 +122,11 @@ void solve(Analysis& an, RunLog& log, const RunOptions& opt) {
       }
       checkConverged(an, log, lstp, NRit, fErr, uvw, fext + frct + fib, opt.acceptFloor);  // fErr > tol: throws
     } catch (const RunError& e) {                                    // no convergence, NaN, singular
-      recordStep(log, inc, NRit, fErr, false);
+      recordStep(log, inc, NRit, fErr, Kff, false);
       loadSteps.retry(inc, e, an, opt.quiet);                        // remedies (off: rethrows e)
       continue;
     }
-    recordStep(log, inc, NRit, fErr, true);
+    recordStep(log, inc, NRit, fErr, Kff, true);
     an.frct = frct + fib;                                            // reactions, IB ones too
     an.uvw = uvw;
     an.ibForce = boundaryForces(ib, uvw, int(an.boundaries.size()));  // seed 003 (none: empty)
@@ -294,8 +295,11 @@ static void checkConverged(const Analysis& an, const RunLog& log, int lstp, int 
 }
 
 // one steps.csv row per attempt at a load step (its seconds are set at its end)
-static void recordStep(RunLog& log, const Increment& inc, int NRit, double fErr, bool converged) {
+static void recordStep(RunLog& log, const Increment& inc, int NRit, double fErr, const FreeSystem& Kff,
+                       bool converged) {
   log.totalNRit += NRit;
+  log.solverAnalyses = Kff.builds;                                   // so far (summary.json)
+  log.luFallbacks = Kff.fallbacks;
   log.steps.push_back({inc.lstp, inc.lf1, NRit, fErr, converged, 0.0});
 }
 

@@ -11,12 +11,8 @@
 #include "formPCstiff.h"
 #include "formULstiff.h"
 #include "stiffnessPattern.h"
+#include "pointShares.h"
 #include "tensorOps.h"
-#include <algorithm>
-#include <exception>
-#ifdef _OPENMP
-#include <omp.h>
-#endif
 
 namespace ample {
 
@@ -151,25 +147,6 @@ void addPoint(const Eigen::VectorXd& uvw, const Matrix3d& bEn, Formulation form,
     addToPattern(pattern, Kval, d, ne, ke.topLeftCorner(ne, ne));
 }
 
-// threads for the point loop: 1 without OpenMP, or for fewer than 2048 points a
-// thread (small runs stay serial, bit for bit); else OMP_NUM_THREADS or the cores
-int pointThreads(int np) {
-#ifdef _OPENMP
-  return std::max(1, std::min(omp_get_max_threads(), np / 2048));
-#else
-  (void)np;
-  return 1;
-#endif
-}
-
-int threadId() {
-#ifdef _OPENMP
-  return omp_get_thread_num();
-#else
-  return 0;
-#endif
-}
-
 }  // namespace
 
 // exp(2 eps_e,n) of every point (eq 9): it does not change within a load step
@@ -200,31 +177,20 @@ void detMPs(const Eigen::VectorXd& uvw, std::vector<MaterialPoint>& mpData, Form
     }
     return;
   }
-  // the same loop on nt threads (AMPLE_OPENMP): thread t takes the points
-  // [np t / nt, np (t+1) / nt) and adds into its own fint and Kt values (thread 0:
-  // out's); summed in thread order after the loop: no races, and the same sums in
-  // every run with the same number of threads
+  // the same loop on nt threads (AMPLE_OPENMP): share t adds into its own fint and
+  // Kt values (share 0: out's), summed in share order after the loop: no races,
+  // and the same sums in every run with the same number of threads
   out.part.resize(nt - 1);
-  std::vector<std::exception_ptr> failed(nt);                  // a point that threw, per thread
-#pragma omp parallel num_threads(nt)
-  {
-    const int t = threadId();
+  forPointShares(np, nt, [&](int t, int begin, int end) {
     Eigen::VectorXd& fint = t == 0 ? out.fint : out.part[t - 1].fint;
     if (t > 0) {
       out.part[t - 1].fint.setZero(nDoF);
       out.part[t - 1].Kval.assign(out.Kt.nonZeros(), 0.0);
     }
     double* Kval = t == 0 ? out.Kt.valuePtr() : out.part[t - 1].Kval.data();
-    try {
-      for (int p = int(long(np) * t / nt); p < int(long(np) * (t + 1) / nt); ++p)
-        addPoint(uvw, out.bEn.empty() ? none : out.bEn[p], form, mpData[p], out.Kt, out.blocked,
-                 fint, Kval);
-    } catch (...) {
-      failed[t] = std::current_exception();
-    }
-  }
-  for (const std::exception_ptr& e : failed)
-    if (e) std::rethrow_exception(e);                          // the first share's first failure
+    for (int p = begin; p < end; ++p)
+      addPoint(uvw, out.bEn.empty() ? none : out.bEn[p], form, mpData[p], out.Kt, out.blocked, fint, Kval);
+  });
   for (const DetMPsOut::Part& part : out.part) {
     out.fint += part.fint;
     Eigen::Map<Eigen::VectorXd>(out.Kt.valuePtr(), out.Kt.nonZeros()) +=

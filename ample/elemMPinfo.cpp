@@ -10,6 +10,7 @@
 #include "errors.h"
 #include "domainCorners.h"
 #include "nodesForMP.h"
+#include "pointShares.h"
 #include <algorithm>
 
 namespace ample {
@@ -71,23 +72,33 @@ int dropNullNodes(MaterialPoint& mp) {
   return mp.nn = k;
 }
 
-void elemMPinfo(Mesh& mesh, std::vector<MaterialPoint>& mpData, bool keepCells) {
-  mesh.eInA.assign(mesh.nels(), 0);
-  if (!mesh.regular()) buildCellSearch(mesh);  // a setup may have moved the mesh's nodes
-  for (size_t p = 0; p < mpData.size(); ++p) {
-    MaterialPoint& mp = mpData[p];
-    try {
-      if (keepCells && mp.ne == 1) {}             // FE mode: the point's own cell, no search
-      else if (isCPDI(mp)) mp.ne = cellsOfCorners(mesh, mp, mp.eIN);
-      else mp.ne = elemForMP(mesh, mp.mpC, mp.lp, mp.eIN);
-    } catch (const RunError& e) {
-      throw RunError("point " + std::to_string(p) + ": " + e.what());
-    }
-    mp.nn = nodesForMP(mesh, mp.eIN, mp.ne, mp.nIN);
-    MPMbasis(mesh, mp);
-    dropNullNodes(mp);
-    for (int e = 0; e < mp.ne; ++e) mesh.eInA[mp.eIN[e]] = 1;
+// one point: its cells (elemForMP, or the corners' cells for CPDI), their nodes,
+// the basis functions and gradients at those nodes (MPMbasis), null nodes dropped
+static void pointBasis(const Mesh& mesh, MaterialPoint& mp, size_t p, bool keepCells) {
+  try {
+    if (keepCells && mp.ne == 1) {}               // FE mode: the point's own cell, no search
+    else if (isCPDI(mp)) mp.ne = cellsOfCorners(mesh, mp, mp.eIN);
+    else mp.ne = elemForMP(mesh, mp.mpC, mp.lp, mp.eIN);
+  } catch (const RunError& e) {
+    throw RunError("point " + std::to_string(p) + ": " + e.what());
   }
+  mp.nn = nodesForMP(mesh, mp.eIN, mp.ne, mp.nIN);
+  MPMbasis(mesh, mp);
+  dropNullNodes(mp);
+}
+
+void elemMPinfo(Mesh& mesh, std::vector<MaterialPoint>& mpData, bool keepCells) {
+  if (!mesh.regular()) buildCellSearch(mesh);  // a setup may have moved the mesh's nodes
+  const int np = int(mpData.size()), nt = pointThreads(np);
+  if (nt == 1)
+    for (int p = 0; p < np; ++p) pointBasis(mesh, mpData[p], p, keepCells);
+  else                                          // the same on nt threads (AMPLE_OPENMP)
+    forPointShares(np, nt, [&](int, int begin, int end) {
+      for (int p = begin; p < end; ++p) pointBasis(mesh, mpData[p], p, keepCells);
+    });
+  mesh.eInA.assign(mesh.nels(), 0);             // the active cells: those holding points
+  for (const MaterialPoint& mp : mpData)
+    for (int e = 0; e < mp.ne; ++e) mesh.eInA[mp.eIN[e]] = 1;
 }
 
 }  // namespace ample

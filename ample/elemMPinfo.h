@@ -12,9 +12,12 @@
 // cell from an earlier step keeps it without a search, as an integration point
 // keeps its element however the element distorts (a non-convex cell fails the
 // search's edge test but its isoparametric map still holds at the point).
+// With OpenMP and at least 2048 points a thread (pointShares.h) the points are
+// shared out over the threads (each writes only its own points; the same
+// result as serially, bit for bit); the active cells are marked after.
 // Inputs:  mesh · mpData (mpC, lp, mpType; eIN, ne when keepCells) · keepCells
 // Outputs: mpData (eIN, ne, nIN, nn, Svp, dSvp) · mesh.eInA (nels)
-// Tests:   tests/test_basis.cpp
+// Tests:   tests/test_basis.cpp (threaded: tests/test_detMPs.cpp)
 //--------------------------------------------------------------------------
 #pragma once
 #include "mpData.h"

@@ -92,27 +92,50 @@ if comp:
     fig.tight_layout(); fig.savefig(os.path.join(OUT, "compaction.png"), dpi=110); plt.close(fig)
 
 # 2. scaling -----------------------------------------------------------------------------------
+# curves: the compaction column; the collapse with each solver= (LU, LDLT); the collapse of
+# stop 17 (scaling2d_stop17.csv, before issue 14's point loop and solver choice), dashed
 scal = rows("scaling") + rows("scaling2d")
+before = rows("scaling2d_stop17")
 if scal:
     fig, ax = plt.subplots(1, 2, figsize=(11, 4.2))
     tables.append("\n## Scaling: run time and memory against the number of points\n")
     tables.append("| setup | parameters | points | NR its | wall s | detMPs s | linSolve s | us per point-iteration (detMPs) | peak kB | kB per point |\n|---|---|---|---|---|---|---|---|---|---|\n")
-    for setup, mark in (("compaction", "o-"), ("collapse", "s-")):
-        rs = [r for r in scal if r["setup"] == setup and r["converged"] == "1"]
+    curves = [("compaction", None, "o-", scal, "compaction")]
+    curves += [("collapse", sv, m, scal, "collapse solver=" + sv) for sv, m in (("LU", "s-"), ("LDLT", "^-"))]
+    curves += [("collapse", "LU", "s--", before, "collapse, stop 17 (LU)")]
+    for setup, solver, mark, src, label in curves:
+        rs = [r for r in src if r["setup"] == setup and r["converged"] == "1" and
+              (solver is None or param(r, "solver", "LU") == solver)]
         if not rs:
             continue
         n = [num(r, "nmp") for r in rs]
         w = [num(r, "wall_s") for r in rs]
-        ax[0].loglog(n, w, mark, label="%s (slope %.2f)" % (setup, slope(n, w) if len(n) > 1 else float("nan")))
-        ax[1].semilogx(n, [num(r, "t_linSolve") / num(r, "wall_s") for r in rs], mark, label=setup)
-        for r in rs:
+        ax[0].loglog(n, w, mark, label="%s (slope %.2f)" % (label, slope(n, w) if len(n) > 1 else float("nan")))
+        ax[1].semilogx(n, [num(r, "t_linSolve") / num(r, "wall_s") for r in rs], mark, label=label)
+        for r in rs if src is scal else []:
             us = 1e6 * num(r, "t_detMPs") / (num(r, "nmp") * num(r, "NR_iterations"))
             tables.append("| %s | %s | %d | %s | %.2f | %.2f | %.2f | %.2f | %s | %.2f |\n" % (
                 setup, r["parameters"], num(r, "nmp"), r["NR_iterations"], num(r, "wall_s"), num(r, "t_detMPs"),
                 num(r, "t_linSolve"), us, r["peak_kB"], num(r, "peak_kB") / num(r, "nmp")))
-    ax[0].set_xlabel("material points"); ax[0].set_ylabel("wall time (s)"); ax[0].legend(); ax[0].grid(True, which="both", alpha=.3)
-    ax[1].set_xlabel("material points"); ax[1].set_ylabel("share of linSolve"); ax[1].legend(); ax[1].grid(True, alpha=.3)
+    ax[0].set_xlabel("material points"); ax[0].set_ylabel("wall time (s)"); ax[0].legend(fontsize=8); ax[0].grid(True, which="both", alpha=.3)
+    ax[1].set_xlabel("material points"); ax[1].set_ylabel("share of linSolve"); ax[1].legend(fontsize=8); ax[1].grid(True, alpha=.3)
     fig.tight_layout(); fig.savefig(os.path.join(OUT, "scaling.png"), dpi=110); plt.close(fig)
+
+# 2b. threads: the point loop on 1 and 2 OpenMP threads -----------------------------------------
+thr = rows("threads")
+if thr:
+    tables.append("\n## Threads: the point loop on one and two OpenMP threads\n")
+    tables.append("| setup | parameters | points | wall s | detMPs s | elemMPinfo s | linSolve s | run speed-up | detMPs speed-up |\n|---|---|---|---|---|---|---|---|---|\n")
+    one = {(r["setup"], " ".join(kv for kv in r["parameters"].split() if not kv.startswith("threads="))): r
+           for r in thr if param(r, "threads") == "1"}
+    for r in thr:
+        key = (r["setup"], " ".join(kv for kv in r["parameters"].split() if not kv.startswith("threads=")))
+        base = one.get(key)
+        sw = num(base, "wall_s") / num(r, "wall_s") if base else float("nan")
+        sd = num(base, "t_detMPs") / num(r, "t_detMPs") if base else float("nan")
+        tables.append("| %s | %s | %d | %.2f | %.2f | %.2f | %.2f | %.2f | %.2f |\n" % (
+            r["setup"], r["parameters"], num(r, "nmp"), num(r, "wall_s"), num(r, "t_detMPs"),
+            num(r, "t_elemMPinfo"), num(r, "t_linSolve"), sw, sd))
 
 # 3. beam: load against tip displacement, elastica -------------------------------------------
 beam = rows("beam")

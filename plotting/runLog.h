@@ -63,6 +63,8 @@ struct RunLog {
   std::vector<ResidualRow> residuals;
   Timers t;
   int totalNRit = 0;
+  int solverAnalyses = 0;       // symbolic analyses of Kt(fd,fd) (a new pattern or fd)
+  int luFallbacks = 0;          // passes a symmetric solver= handed to SparseLU
   bool converged = true;
   int lastConverged = 0;        // last load step that converged
   std::string message;          // why the run stopped early (empty when complete)

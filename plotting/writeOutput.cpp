@@ -81,6 +81,7 @@ static std::string summaryJson(const Setup& setup, const Params& P, const Analys
   s << "},\n  \"nmp\": " << an.mpData.size() << ",\n  \"nodes\": " << an.mesh.nodes()
     << ",\n  \"nDoF\": " << an.mesh.nDoF() << ",\n  \"lstps\": " << an.lstps
     << ",\n  \"total_NR_iterations\": " << log.totalNRit
+    << ",\n  \"solver_analyses\": " << log.solverAnalyses << ",\n  \"lu_fallbacks\": " << log.luFallbacks
     << ",\n  \"converged\": " << (log.converged ? "true" : "false")
     << ",\n  \"completed\": " << (log.converged ? "true" : "false")
     << ",\n  \"last_converged_step\": " << log.lastConverged << ",\n  \"message\": \"";

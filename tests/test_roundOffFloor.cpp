@@ -49,7 +49,7 @@ double after(const std::string& m, const std::string& key) {
 TEST_SUITE("roundOffFloor") {
   TEST_CASE("roundOffFloor: the formula of its header (steps 1-4) on one point by hand") {
     // one point on nodes 0 and 1, dS/dX = (-1, 0.5) and (1, 0.5), V = 2, E = 3, nu = 0 (M = 3),
-    // sig_max = 4; du: node 0 (0.5, -2), node 1 (1, 0); load (3, 4, 0, 0) -> |load + eps| = 5
+    // sig_max = 4; du: node 0 (0.5, -3), node 1 (1, 0); load (3, 4, 0, 0) -> |load + eps| = 5
     MaterialPoint mp;
     mp.nn = 2;
     mp.nIN[0] = 0;
@@ -60,14 +60,15 @@ TEST_SUITE("roundOffFloor") {
     mp.mCst << 3, 0, 0;
     mp.sig << 1, -4, 0, 2, 0, 0;
     Eigen::VectorXd uvw(4), load(4);
-    uvw << 0.5, -2, 1, 0;
+    uvw << 0.5, -3, 1, 0;
     load << 3, 4, 0, 0;
     // s = max over (i, j) of sum_v |du_vi dS_vj|: (x,X) 0.5 + 1 = 1.5, (x,Y) 0.25 + 0.5 = 0.75,
-    // (y,X) 2 + 0 = 2, (y,Y) 1 + 0 = 1 -> 2; dsig = 3 (2 + 1) + 4 = 13; f_v = 2 x 1.5 x 13 = 39
-    // for both nodes, on both dofs: sqrt(4 x 39^2) = 78
-    const double want = DBL_EPSILON / 2 * 78 / std::sqrt(std::pow(3 + DBL_EPSILON, 2) + std::pow(4 + DBL_EPSILON, 2) +
+    // (y,X) 3 + 0 = 3, (y,Y) 1.5 + 0 = 1.5 -> 3 (sum_v |dS_vj| alone would be 2: du counts);
+    // dsig = 3 (3 + 1) + 4 = 16; f_v = 2 x 1.5 x 16 = 48 for both nodes, on both dofs:
+    // sqrt(4 x 48^2) = 96
+    const double want = DBL_EPSILON / 2 * 96 / std::sqrt(std::pow(3 + DBL_EPSILON, 2) + std::pow(4 + DBL_EPSILON, 2) +
                                                          2 * DBL_EPSILON * DBL_EPSILON);
-    CHECK(roundOffFloor({mp}, uvw, load) == doctest::Approx(want).epsilon(1e-14));
+    CHECK(roundOffFloor({mp}, uvw, load) / want == doctest::Approx(1.0).epsilon(1e-14));  // ~1e-15: relative
   }
 
   TEST_CASE("roundOffFloor: a compaction at tol = 1e-16 stalls at the estimated floor / and the tol it suggests passes") {

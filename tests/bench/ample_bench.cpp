@@ -8,7 +8,8 @@
 //   compaction  error (eq 37) and time, nelsy = 2^2..2^13, mpType 1-4
 //   scaling     run time and memory against points: compaction to 2^20 points
 //   scaling2d   the same for the collapse refined to 147,456 points (a = 2..16, 6x6
-//               points per cell), with solver=LU (the default) and solver=LDLT
+//               points per cell), with solver=LU (the default) and solver=LDLT, and to
+//               589,824 points (a = 32) with solver=LDLT
 //   threads     the point loop on 1 and 2 OpenMP threads (AMPLE_OPENMP): collapse a = 8,
 //               16 (solver=LDLT), compaction 2^16 cells
 //   beam        tip displacement for a = 1, 2, 4 (6x6) and mp = 2, 3, 4 (a = 2),
@@ -159,8 +160,8 @@ std::vector<Suite> suites(bool quick) {
   all.push_back(scal);
   Suite scal2{"scaling2d", {}, {"extent", "height"}};  // the collapse refined: the solver shows
   for (const char* solver : {"solver=LU", "solver=LDLT"})  // (NRitMax 20: the finest run needs
-    for (int a : {2, 4, 8, 16})                            // 11 passes)
-      if (!quick || a <= 4)
+    for (int a : {2, 4, 8, 16, 32})                        // 11 passes); a = 32 (589,824 points)
+      if ((!quick || a <= 4) && (a < 32 || std::string(solver) == "solver=LDLT"))  // with LDLT only (LU: ~20 min)
         scal2.cases.push_back(A({"collapse", "a=" + std::to_string(a), "mp=6", "NRitMax=20", solver}));
   all.push_back(scal2);
   Suite thr{"threads", {}, {"extent", "height", "error"}};

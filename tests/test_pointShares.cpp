@@ -1,0 +1,147 @@
+// Tests of pointShares (the point loops on several threads) and of the threaded
+// elemMPinfo: the shares cover every point once, in contiguous ranges; a failure
+// is reported for the first failing point in point order; the basis of 4,096
+// scattered GIMP and CPDI points on two threads equals the serial one bit for bit.
+#include "ample/elemMPinfo.h"
+#include "ample/errors.h"
+#include "ample/formCoord2D.h"
+#include "ample/pointShares.h"
+#include "setups/setupHelpers.h"
+#include "setups/setups.h"
+#include <doctest/doctest.h>
+#include <random>
+#include <string>
+#ifdef _OPENMP
+#include <omp.h>
+#endif
+
+using namespace ample;
+
+namespace {
+// 4,096 points of 16 x 16 cells (4 x 4 each), moved by up to a quarter cell and
+// with domains from 0.3 to 1.2 of their original half-lengths: every point links
+// its own set of 4 to 16 nodes; every 7th point is CPDI2 with skewed corners
+std::vector<MaterialPoint> scatteredPoints(const Mesh& mesh) {
+  Params P = commonParams(1);
+  for (auto kv : std::vector<std::pair<const char*, double>>{{"mp", 4}, {"mpType", 2}, {"E", 1e6}, {"nu", 0.3}})
+    setDefault(P, kv.first, kv.second);
+  std::vector<MaterialPoint> mpData;
+  fillBlock(mpData, Vector2d(2, 2), 16, 16, mesh.h, P, 1000.0);
+  std::mt19937 gen(11);
+  std::uniform_real_distribution<double> u(-1.0, 1.0), s(0.3, 1.2);
+  for (size_t p = 0; p < mpData.size(); ++p) {
+    MaterialPoint& mp = mpData[p];
+    mp.mpC += 0.25 * mesh.h.cwiseProduct(Vector2d(u(gen), u(gen)));
+    mp.lp = mp.lp0.cwiseProduct(Vector2d(s(gen), s(gen)));
+    if (p % 7 == 0) {
+      mp.mpType = MpType::CPDI2;
+      for (int c = 0; c < 4; ++c)
+        mp.xc.col(c) = mp.mpC + Vector2d(c == 1 || c == 2 ? 1 : -1, c >= 2 ? 1 : -1).cwiseProduct(mp.lp) +
+                       0.2 * mp.lp.cwiseProduct(Vector2d(u(gen), u(gen)));
+    }
+  }
+  return mpData;
+}
+}  // namespace
+
+TEST_SUITE("pointShares") {
+  TEST_CASE("forPointShares: nt contiguous shares cover every point exactly once, share t from np t/nt up to np (t+1)/nt") {
+    for (int nt : {1, 2, 3}) {
+      const int np = 10007;
+      std::vector<int> hits(np, 0), owner(np, -1);
+      forPointShares(np, nt, [&](int t, int begin, int end) {
+        CHECK(begin == int(long(np) * t / nt));
+        CHECK(end == int(long(np) * (t + 1) / nt));
+        for (int p = begin; p < end; ++p) {
+          hits[p]++;
+          owner[p] = t;
+        }
+      });
+      int once = 0, ordered = 1;
+      for (int p = 0; p < np; ++p) {
+        once += hits[p] == 1;
+        if (p > 0 && owner[p] < owner[p - 1]) ordered = 0;
+      }
+      CHECK(once == np);
+      CHECK(ordered == 1);
+      CHECK(owner[np - 1] == nt - 1);
+    }
+  }
+
+  TEST_CASE("forPointShares: a failure in two shares is reported as the lower share's (the first in point order)") {
+    std::string what;
+    try {
+      forPointShares(1000, 2, [&](int t, int begin, int) {
+        throw RunError("share " + std::to_string(t) + " from point " + std::to_string(begin));
+      });
+    } catch (const RunError& e) {
+      what = e.what();
+    }
+    CHECK(what == "share 0 from point 0");
+  }
+
+  TEST_CASE("pointThreads: serial below 2,048 points a thread") {
+    CHECK(pointThreads(0) == 1);
+    CHECK(pointThreads(4095) == 1);
+#ifdef _OPENMP
+    const int before = omp_get_max_threads();
+    omp_set_num_threads(2);
+    CHECK(pointThreads(4096) == 2);
+    CHECK(pointThreads(1 << 20) == 2);
+    omp_set_num_threads(before);
+#endif
+  }
+
+  TEST_CASE("elemMPinfo: the basis of 4,096 scattered GIMP and CPDI2 points on two threads equals the serial one bit for bit") {
+#ifndef _OPENMP
+    MESSAGE("built without AMPLE_OPENMP: elemMPinfo is serial, nothing to compare");
+#else
+    const int before = omp_get_max_threads();
+    Mesh mesh[2] = {formCoord2D(20, 20, 20.0, 20.0), formCoord2D(20, 20, 20.0, 20.0)};
+    std::vector<MaterialPoint> mps[2] = {scatteredPoints(mesh[0]), scatteredPoints(mesh[0])};
+    for (int run = 0; run < 2; ++run) {
+      omp_set_num_threads(run + 1);
+      elemMPinfo(mesh[run], mps[run]);
+    }
+    omp_set_num_threads(before);
+    REQUIRE(mps[0].size() == 4096);
+    int same = 0, nnMin = MAXN, nnMax = 0;
+    for (size_t p = 0; p < mps[0].size(); ++p) {
+      const MaterialPoint &a = mps[0][p], &b = mps[1][p];
+      same += a.nn == b.nn && a.ne == b.ne && a.nIN == b.nIN && a.eIN == b.eIN && a.Svp == b.Svp &&
+              a.dSvp == b.dSvp;
+      nnMin = std::min(nnMin, a.nn);
+      nnMax = std::max(nnMax, a.nn);
+    }
+    CHECK(same == 4096);
+    CHECK(mesh[0].eInA == mesh[1].eInA);
+    CHECK(nnMin < nnMax);                             // the points do link different nodes
+#endif
+  }
+
+  TEST_CASE("elemMPinfo: on two threads a point that left the grid is named as serially (the first such point)") {
+    Mesh mesh = formCoord2D(20, 20, 20.0, 20.0);
+    std::vector<MaterialPoint> mpData = scatteredPoints(mesh);
+    mpData[3000].mpC = Vector2d(25.0, 5.0);           // past x = 20, in the second share
+    mpData[3500].mpC = Vector2d(-1.0, 5.0);
+    std::string what[2];
+#ifdef _OPENMP
+    const int before = omp_get_max_threads();
+#endif
+    for (int run = 0; run < 2; ++run) {
+#ifdef _OPENMP
+      omp_set_num_threads(run + 1);
+#endif
+      try {
+        elemMPinfo(mesh, mpData);
+      } catch (const RunError& e) {
+        what[run] = e.what();
+      }
+    }
+#ifdef _OPENMP
+    omp_set_num_threads(before);
+#endif
+    CHECK(what[0].rfind("point 3000: ", 0) == 0);
+    CHECK(what[1] == what[0]);
+  }
+}
