@@ -147,6 +147,18 @@ void addPoint(const Eigen::VectorXd& uvw, const Matrix3d& bEn, Formulation form,
     addToPattern(pattern, Kval, d, ne, ke.topLeftCorner(ne, ne));
 }
 
+// asks for the cache lines of the point after this one while this one is computed: without
+// it the loop waits for the first loads of each 1,088-byte MaterialPoint (perf: a quarter of
+// addPoint's time; collapse a = 8, detMPs 25-35 % faster with it, the same numbers)
+void prefetchPoint(const MaterialPoint& mp) {
+#if defined(__GNUC__)
+  const char* bytes = reinterpret_cast<const char*>(&mp);
+  for (size_t b = 0; b < sizeof(MaterialPoint); b += 64) __builtin_prefetch(bytes + b);
+#else
+  (void)mp;
+#endif
+}
+
 }  // namespace
 
 // exp(2 eps_e,n) of every point (eq 9): it does not change within a load step
@@ -171,6 +183,7 @@ void detMPs(const Eigen::VectorXd& uvw, std::vector<MaterialPoint>& mpData, Form
   const int nt = pointThreads(np);
   if (nt == 1) {                                                // the point loop
     for (int p = 0; p < np; ++p) {
+      if (p + 1 < np) prefetchPoint(mpData[p + 1]);             // memory only: the next point
       MaterialPoint& mp = mpData[p];                            // the point (gdb: p mp)
       const Matrix3d& bEn = out.bEn.empty() ? none : out.bEn[p];
       addPoint(uvw, bEn, form, mp, out.Kt, out.blocked, out.fint, out.Kt.valuePtr());
@@ -188,8 +201,10 @@ void detMPs(const Eigen::VectorXd& uvw, std::vector<MaterialPoint>& mpData, Form
       out.part[t - 1].Kval.assign(out.Kt.nonZeros(), 0.0);
     }
     double* Kval = t == 0 ? out.Kt.valuePtr() : out.part[t - 1].Kval.data();
-    for (int p = begin; p < end; ++p)
+    for (int p = begin; p < end; ++p) {
+      if (p + 1 < end) prefetchPoint(mpData[p + 1]);
       addPoint(uvw, out.bEn.empty() ? none : out.bEn[p], form, mpData[p], out.Kt, out.blocked, fint, Kval);
+    }
   });
   for (const DetMPsOut::Part& part : out.part) {
     out.fint += part.fint;

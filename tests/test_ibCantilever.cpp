@@ -105,7 +105,7 @@ TEST_SUITE("ibCantilever") {
       REQUIRE(log.converged);
       double V = 0;
       for (const MaterialPoint& mp : an.mpData) V += mp.vp0;
-      CHECK(V == doctest::Approx(L * d).epsilon(1e-12));   // fillPolygon keeps the area
+      CHECK(V == doctest::Approx(L * d).epsilon(1e-12).scale(0));   // fillPolygon keeps the area
       const Eigen::Matrix2d Rt = toBeam(theta);
       REQUIRE(an.history.size() == 3);
       for (int s = 0; s < 3; ++s) {
