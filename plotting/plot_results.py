@@ -92,17 +92,17 @@ if comp:
     fig.tight_layout(); fig.savefig(os.path.join(OUT, "compaction.png"), dpi=110); plt.close(fig)
 
 # 2. scaling -----------------------------------------------------------------------------------
-# curves: the compaction column; the collapse with each solver= (LU, LDLT); the collapse of
-# stop 17 (scaling2d_stop17.csv, before issue 14's point loop and solver choice), dashed
+# curves: the compaction column; the collapse with each solver= (LU, LDLT); the collapse
+# before issue 14 (scaling2d_before.csv: main at 8eb7125, SparseLU, run the same day), dashed
 scal = rows("scaling") + rows("scaling2d")
-before = rows("scaling2d_stop17")
+before = rows("scaling2d_before")
 if scal:
     fig, ax = plt.subplots(1, 2, figsize=(11, 4.2))
     tables.append("\n## Scaling: run time and memory against the number of points\n")
     tables.append("| setup | parameters | points | NR its | wall s | detMPs s | linSolve s | us per point-iteration (detMPs) | peak kB | kB per point |\n|---|---|---|---|---|---|---|---|---|---|\n")
     curves = [("compaction", None, "o-", scal, "compaction")]
     curves += [("collapse", sv, m, scal, "collapse solver=" + sv) for sv, m in (("LU", "s-"), ("LDLT", "^-"))]
-    curves += [("collapse", "LU", "s--", before, "collapse, stop 17 (LU)")]
+    curves += [("collapse", "LU", "s--", before, "collapse before issue 14 (LU)")]
     for setup, solver, mark, src, label in curves:
         rs = [r for r in src if r["setup"] == setup and r["converged"] == "1" and
               (solver is None or param(r, "solver", "LU") == solver)]
