@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <cstdlib>
 #include <cstring>
 #include <filesystem>
 #include <functional>
@@ -133,6 +134,31 @@ TEST_SUITE("output") {
     CHECK(json.find("\"nmp\": 16") != std::string::npos);
     CHECK(json.find("\"error\": ") != std::string::npos);
     CHECK(weightOnBase == doctest::Approx(80 * 10 * 50 * 12.5));
+  }
+
+  TEST_CASE("output: summary.json counts the sparse solve's symbolic analyses (one per pattern) and LU fallbacks") {
+    // one load step: one pattern of Kt(fd,fd), so exactly one analysis; three steps: at least
+    // one, at most one a step; an elastic, symmetric Kt: LDLT never hands a pass to SparseLU
+    const std::string dir = std::string(AMPLE_TEST_TMP) + "/output_solver_counts";
+    const Setup* s = findSetup("compaction");
+    for (int lstps : {1, 3}) {
+      Params P = s->params();
+      setDefault(P, "nelsy", 4);
+      setDefault(P, "lstps", lstps);
+      setDefault(P, "E", 1e6);
+      setDefault(P, "solver", 1);                     // LDLT
+      REQUIRE(ample::ample(*s, P, RunOptions{dir, 0, true}) == 0);
+      const std::string json = testing::fileText(dir + "/summary.json");
+      const size_t a = json.find("\"solver_analyses\": "), f = json.find("\"lu_fallbacks\": ");
+      REQUIRE(a != std::string::npos);
+      REQUIRE(f != std::string::npos);
+      const int analyses = std::atoi(json.c_str() + a + 19), fallbacks = std::atoi(json.c_str() + f + 16);
+      CAPTURE(lstps);
+      CHECK(analyses >= 1);
+      CHECK(analyses <= lstps);
+      if (lstps == 1) CHECK(analyses == 1);
+      CHECK(fallbacks == 0);
+    }
   }
 
   TEST_CASE("output: --vtk 0 writes no VTK / and a rerun removes the old step files") {
