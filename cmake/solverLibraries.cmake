@@ -1,15 +1,23 @@
 # solverLibraries.cmake — optional libraries of the sparse solve (docs/scaling.md, "The sparse solve")
 #
 #   -DAMPLE_METIS=ON        METIS nested-dissection ordering (apt-get install libmetis-dev):
-#                           solver=LU_METIS and solver=LDLT_METIS (Eigen's MetisOrdering)
+#                           solver=LDLT_METIS (Eigen's MetisOrdering)
 #   -DAMPLE_SUITESPARSE=ON  SuiteSparse (apt-get install libsuitesparse-dev):
 #                           solver=CHOLMOD (supernodal LL^T) and solver=UMFPACK
 #
 # Both OFF by default: the default build uses Eigen only. Each ON option defines
 # AMPLE_HAVE_METIS / AMPLE_HAVE_SUITESPARSE on amplecore (and so on every program
 # linked to it); a library that is asked for and not found stops the configure.
-option(AMPLE_METIS "METIS orderings for the sparse solve (solver=LU_METIS, LDLT_METIS)" OFF)
+option(AMPLE_METIS "METIS ordering for the sparse solve (solver=LDLT_METIS)" OFF)
 option(AMPLE_SUITESPARSE "SuiteSparse solvers for the sparse solve (solver=CHOLMOD, UMFPACK)" OFF)
+
+# amplecore (and every program linked to it) gets the headers, the libraries and the define
+function(ample_use_library define include_dir libraries)
+  target_include_directories(amplecore PUBLIC ${include_dir})
+  target_link_libraries(amplecore PUBLIC ${libraries})
+  target_compile_definitions(amplecore PUBLIC ${define})
+  message(STATUS "${define}: ${libraries}")
+endfunction()
 
 if(AMPLE_METIS)
   find_path(METIS_INCLUDE_DIR metis.h)
@@ -17,10 +25,7 @@ if(AMPLE_METIS)
   if(NOT METIS_INCLUDE_DIR OR NOT METIS_LIBRARY)
     message(FATAL_ERROR "AMPLE_METIS=ON: metis.h or libmetis not found (Debian: apt-get install libmetis-dev)")
   endif()
-  target_include_directories(amplecore PUBLIC ${METIS_INCLUDE_DIR})
-  target_link_libraries(amplecore PUBLIC ${METIS_LIBRARY})
-  target_compile_definitions(amplecore PUBLIC AMPLE_HAVE_METIS)
-  message(STATUS "AMPLE_METIS: ${METIS_LIBRARY}")
+  ample_use_library(AMPLE_HAVE_METIS "${METIS_INCLUDE_DIR}" "${METIS_LIBRARY}")
 endif()
 
 if(AMPLE_SUITESPARSE)
@@ -36,8 +41,5 @@ if(AMPLE_SUITESPARSE)
   if(NOT SUITESPARSE_INCLUDE_DIR)
     message(FATAL_ERROR "AMPLE_SUITESPARSE=ON: cholmod.h not found (Debian: apt-get install libsuitesparse-dev)")
   endif()
-  target_include_directories(amplecore PUBLIC ${SUITESPARSE_INCLUDE_DIR})
-  target_link_libraries(amplecore PUBLIC ${SUITESPARSE_LIBRARIES})
-  target_compile_definitions(amplecore PUBLIC AMPLE_HAVE_SUITESPARSE)
-  message(STATUS "AMPLE_SUITESPARSE: ${SUITESPARSE_LIBRARIES}")
+  ample_use_library(AMPLE_HAVE_SUITESPARSE "${SUITESPARSE_INCLUDE_DIR}" "${SUITESPARSE_LIBRARIES}")
 endif()
