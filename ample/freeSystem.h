@@ -10,8 +10,9 @@
 //   refillFreeSystem copies Kt's values into it for each pass, and linSolve
 //                    only refactorises numerically.
 // The main loop keeps one FreeSystem for the whole run: a load step whose fd
-// and Kt pattern (compared entry by entry, O(nnz)) are those of the step
-// before (no point entered or left a cell) keeps the analysis too.
+// and Kt(fd,fd) pattern (Kt's free entries compared with fromKt entry by
+// entry, O(nnz)) are those of the step before (no point entered or left a
+// cell) keeps the analysis too.
 // choice (setup parameter solver=, docs/scaling.md "The sparse solve"):
 //   LU          Eigen's SparseLU, COLAMD ordering (the design card's; measured
 //               against AMD and METIS in docs/scaling.md: the least fill)
@@ -49,7 +50,7 @@ namespace ample {
 struct FreeSystem {
   LinearSolver choice = LinearSolver::LU;      // solver= (above)
   std::vector<int> fd;                         // free dofs it was built for
-  std::vector<int> ktOuter, ktInner;           // the Kt pattern it was built for
+  int ktRows = 0;                              // rows of the Kt it was built for
   std::vector<int> fromKt;                     // Kff value e is Kt value fromKt[e]
   SpMat Kff;                                   // Kt(fd,fd)
   Eigen::SparseLU<SpMat, Eigen::COLAMDOrdering<int>> lu;  // LU, and the symmetric choices' fallback
