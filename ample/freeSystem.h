@@ -21,7 +21,8 @@
 //   CHOLMOD     CHOLMOD supernodal LL^T (AMPLE_SUITESPARSE)   } to 1e-12, else SparseLU
 //   UMFPACK     UMFPACK's LU (AMPLE_SUITESPARSE)
 // A symmetric choice whose pass is not symmetric (or whose factorisation
-// fails, e.g. LL^T of an indefinite Kt) falls back to SparseLU for that pass,
+// fails, e.g. LL^T of an indefinite Kt, or whose solve has a backward error
+// above 1e-12: linSolve.cpp) falls back to SparseLU for that pass,
 // said once on stderr (fallbacks counts); SparseLU is analysed when first needed.
 // What it saves: the extraction and the ordering in every pass (see the
 // closing figures in docs/structure.md).

@@ -92,7 +92,7 @@ if comp:
     fig.tight_layout(); fig.savefig(os.path.join(OUT, "compaction.png"), dpi=110); plt.close(fig)
 
 # 2. scaling -----------------------------------------------------------------------------------
-# curves: the compaction column; the collapse with each solver= (LU, LDLT); the collapse
+# curves: the compaction column and the collapse with each solver= (LU, LDLT); the collapse
 # before issue 14 (scaling2d_before.csv: main at 8eb7125, SparseLU, run the same day), dashed
 scal = rows("scaling") + rows("scaling2d")
 before = rows("scaling2d_before")
@@ -100,7 +100,7 @@ if scal:
     fig, ax = plt.subplots(1, 2, figsize=(11, 4.2))
     tables.append("\n## Scaling: run time and memory against the number of points\n")
     tables.append("| setup | parameters | points | NR its | wall s | detMPs s | linSolve s | us per point-iteration (detMPs) | peak kB | kB per point |\n|---|---|---|---|---|---|---|---|---|---|\n")
-    curves = [("compaction", None, "o-", scal, "compaction")]
+    curves = [("compaction", sv, m, scal, "compaction solver=" + sv) for sv, m in (("LU", "o-"), ("LDLT", "D-"))]
     curves += [("collapse", sv, m, scal, "collapse solver=" + sv) for sv, m in (("LU", "s-"), ("LDLT", "^-"))]
     curves += [("collapse", "LU", "s--", before, "collapse before issue 14 (LU)")]
     for setup, solver, mark, src, label in curves:

@@ -6,7 +6,8 @@
 // are repeated five times and the median wall time is kept. The figures of
 // each run come from its summary.json. Suites (all when none is named):
 //   compaction  error (eq 37) and time, nelsy = 2^2..2^13, mpType 1-4
-//   scaling     run time and memory against points: compaction to 2^20 points
+//   scaling     run time and memory against points: compaction to 2^20 points, with
+//               solver=LU (the default) and solver=LDLT
 //   scaling2d   the same for the collapse refined to 147,456 points (a = 2..16, 6x6
 //               points per cell), with solver=LU (the default) and solver=LDLT, and to
 //               589,824 points (a = 32) with solver=LDLT
@@ -154,9 +155,13 @@ std::vector<Suite> suites(bool quick) {
   all.push_back(comp);
 
   Suite scal{"scaling", {}, {"error"}};
-  for (int e = 10; e <= (quick ? 12 : 18); ++e)  // from 2^16 cells the residual floor of the
-    scal.cases.push_back(A({"compaction", "nelsy=" + std::to_string(1 << e),  // column lies near
-                            e >= 16 ? "tol=1e-8" : "tol=1e-9"}));           // 1e-9: tol 1e-8 there
+  for (const char* solver : {"", "solver=LDLT"})   // SparseLU (the default) and LDLT
+    for (int e = 10; e <= (quick ? 12 : 18); ++e) {  // from 2^16 cells the residual floor of the
+      Args c = A({"compaction", "nelsy=" + std::to_string(1 << e),  // column lies near 1e-9:
+                  e >= 16 ? "tol=1e-8" : "tol=1e-9"});              // tol 1e-8 there
+      if (*solver) c.push_back(solver);
+      scal.cases.push_back(c);
+    }
   all.push_back(scal);
   Suite scal2{"scaling2d", {}, {"extent", "height"}};  // the collapse refined: the solver shows
   for (const char* solver : {"solver=LU", "solver=LDLT"})  // (NRitMax 20: the finest run needs
