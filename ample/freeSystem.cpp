@@ -9,6 +9,7 @@
 namespace ample {
 
 void extractFreeSystem(const SpMat& Kt, const std::vector<int>& fd, FreeSystem& S) {
+  eigen_assert(Kt.isCompressed() && std::is_sorted(fd.begin(), fd.end()));  // (freeSystem.h)
   const int nfd = int(fd.size());
   const int *outer = Kt.outerIndexPtr(), *inner = Kt.innerIndexPtr();
   std::vector<int> freeIdx(Kt.rows(), -1);              // global dof -> row of Kt(fd,fd)

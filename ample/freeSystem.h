@@ -26,7 +26,8 @@
 // said once on stderr (fallbacks counts); SparseLU is analysed when first needed.
 // What it saves: the extraction and the ordering in every pass (see the
 // closing figures in docs/structure.md).
-// Inputs:  Kt (nDoF x nDoF) · fd (nfd free dofs, ascending) · S.choice
+// Inputs:  Kt (nDoF x nDoF, compressed, rows sorted in each column: as stiffnessPattern
+//          builds it) · fd (nfd free dofs, ascending: as detFDoFs gives them) · S.choice
 // Outputs: S (FreeSystem): fd, pattern, fromKt, Kff (nfd x nfd), the chosen solver analysed
 // Tests:   tests/test_linSolve.cpp
 //--------------------------------------------------------------------------

@@ -15,6 +15,7 @@ namespace ample {
 // in the mirror's column by bisection (no transposed copy); an entry without a mirror is
 // compared with 0
 static bool symmetric(const SpMat& K) {
+  if (K.nonZeros() == 0) return true;
   const double tol = 1e-12 * K.coeffs().cwiseAbs().maxCoeff();
   const int *outer = K.outerIndexPtr(), *inner = K.innerIndexPtr();
   const double* val = K.valuePtr();
@@ -48,7 +49,7 @@ static bool symmetricSolve(SymmetricSolver& s, const SpMat& K, const Eigen::Vect
   s.factorize(K);
   if (s.info() != Eigen::Success) return false;
   x = s.solve(rhs);
-  return backwardError(K, x, rhs) <= 1e-12;
+  return x.allFinite() && backwardError(K, x, rhs) <= 1e-12;  // (Eigen's max norms skip NaN)
 }
 
 // the chosen symmetric solver on S.Kff; false for LU and UMFPACK

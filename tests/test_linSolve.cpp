@@ -183,7 +183,7 @@ TEST_SUITE("linSolve") {
     REQUIRE(K.nonZeros() == chain().nonZeros() + 2);
     const LinSolveOut b = linSolve({{4, 0.1}}, K, oobf, 1, fd, &S);
     CHECK(S.builds == 1);
-    CHECK((a.duvw - b.duvw).norm() == 0.0);
+    CHECK((a.duvw - b.duvw).norm() == 0.0);               // (the same system: the same answer)
     K.insert(4, 2) = 0.0;                                 // column 2 grows: column 3's values move
     K.makeCompressed();
     const LinSolveOut c = linSolve({{4, 0.1}}, K, oobf, 1, fd, &S);
@@ -191,6 +191,43 @@ TEST_SUITE("linSolve") {
     CHECK((a.duvw - c.duvw).norm() == 0.0);               // the values read where they now are
     linSolve({{4, 0.1}}, K, oobf, 1, {0, 1, 3}, &S);     // other free dofs
     CHECK(S.builds == 3);
+  }
+  // a free entry that changes its row but not its place in Kt (column 0's rows {0, 1} become
+  // {0, 2}): the positions fromKt knows still match, the pattern of Kt(fd,fd) does not
+  TEST_CASE("linSolve: the cache rebuilds when a free entry of Kt moves to another row in the same place") {
+    FreeSystem S;
+    Eigen::VectorXd oobf(5);
+    oobf << 0.7, 0.5, -1.0, 0.25, 2.0;
+    const std::vector<int> fd{0, 1, 2, 3};
+    linSolve({{4, 0.1}}, chain(), oobf, 1, fd, &S);
+    std::vector<Eigen::Triplet<double>> t;
+    const SpMat C = chain();
+    for (int c = 0; c < C.outerSize(); ++c)
+      for (SpMat::InnerIterator it(C, c); it; ++it)
+        t.emplace_back(c == 0 && it.row() == 1 ? 2 : int(it.row()), c, it.value());
+    SpMat K(5, 5);
+    K.setFromTriplets(t.begin(), t.end());
+    REQUIRE(K.nonZeros() == C.nonZeros());
+    const LinSolveOut o = linSolve({{4, 0.1}}, K, oobf, 1, fd, &S);
+    CHECK(S.builds == 2);
+    const Eigen::VectorXd r = K * o.duvw - oobf;
+    for (int d : fd) CHECK(std::abs(r(d)) <= 1e-13);
+  }
+  // [[e, 1], [1, e]] with e = 1e-18: symmetric and factorisable without pivoting, but LDL^T
+  // takes the tiny pivot first (either order) and its solve is garbage; the backward error
+  // sees it and SparseLU (pivoting) solves the pass: x = (b2, b1) to round-off
+  TEST_CASE("linSolve: solver=LDLT hands an unstable factorisation (a tiny pivot) to SparseLU") {
+    std::vector<Eigen::Triplet<double>> t{{0, 0, 1e-18}, {1, 1, 1e-18}, {0, 1, 1.0}, {1, 0, 1.0}};
+    SpMat K(2, 2);
+    K.setFromTriplets(t.begin(), t.end());
+    Eigen::VectorXd oobf(2);
+    oobf << 1.0, 2.0;
+    FreeSystem S;
+    S.choice = LinearSolver::LDLT;
+    const LinSolveOut o = linSolve({}, K, oobf, 2, {0, 1}, &S);
+    CHECK(S.fallbacks == 1);
+    CHECK(std::abs(o.duvw(0) - 2.0) <= 1e-12);
+    CHECK(std::abs(o.duvw(1) - 1.0) <= 1e-12);
   }
   // springs alternately stiff (1e6) and soft (1) along 100 dofs, held at dof 0, pulled at the
   // end: cond(Kff) ~ 1e10, so a backward-stable solve leaves a relative residual well above
