@@ -13,7 +13,8 @@ namespace ample {
 
 // Kt(fd,fd) symmetric to 1e-12 of its largest entry: each entry against its mirror, found
 // in the mirror's column by bisection (no transposed copy); an entry without a mirror is
-// compared with 0
+// compared with 0. A guard of cost only: the backward error below refuses the solve of an
+// unsymmetric K too (LDL^T reads one triangle), after a wasted factorisation
 static bool symmetric(const SpMat& K) {
   if (K.nonZeros() == 0) return true;
   const double tol = 1e-12 * K.coeffs().cwiseAbs().maxCoeff();
