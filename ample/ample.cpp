@@ -43,11 +43,13 @@
 #include <cmath>
 #include <cstdio>
 #include <iostream>
+#include <new>
 
 namespace ample {
 
 // helpers of this page (defined below it): bookkeeping, not algorithm
 static void checkAnalysis(const Analysis& an);
+static int lstpsMax(const Params& P);
 static void startStep(Analysis& an, int lstp, RunLog& log, bool quiet);
 static std::vector<BC> scaled(std::vector<BC> bc, double factor);
 static SpMat ghostPenaltyOf(const Analysis& an);
@@ -68,16 +70,22 @@ int ample(const Setup& setup, const Params& P, const RunOptions& opt) {
   an.name = setup.name;
   checkAnalysis(an);
   prepareOutput(opt.outDir);
-  try {
-    solve(an, log, opt);                                             // the loops, below
-  } catch (const RunError& e) {                                      // the run cannot go on
+  auto stop = [&](const std::string& why) {                          // the run cannot go on
     if (!log.steps.empty() && !log.steps.back().converged) log.steps.back().seconds = log.stepClock.lap();
     restoreConverged(an.mpData);
     log.converged = false;
-    log.message = e.what();
-    std::cerr << "ample: " << setup.name << ": " << e.what() << "\n"
+    log.message = why;
+    std::cerr << "ample: " << setup.name << ": " << why << "\n"
               << "ample: output kept up to the last converged load step ("
               << log.lastConverged << ") in " << opt.outDir << "\n";
+  };
+  try {
+    solve(an, log, opt);                                             // the loops, below
+  } catch (const RunError& e) {
+    stop(e.what() + whatToTry(e, an, lstpsMax(P)));
+  } catch (const std::bad_alloc&) {
+    stop("out of memory in load step " + std::to_string(log.lastConverged + 1) +
+         ": try fewer cells or points (the setup's grid parameters, mp) or OMP_NUM_THREADS=1");
   }
   log.t.total = total.lap();
   writeOutput(setup, P, an, log, opt.outDir, opt.quiet);
@@ -163,7 +171,7 @@ static void checkGeneralMesh(const Analysis& an) {
       throw InputError("material point " + std::to_string(p) + " at (" + std::to_string(mp.mpC(0)) +
                        ", " + std::to_string(mp.mpC(1)) + ") lies in no cell of " + mesh.substr(4));
   }
-  if (an.mpData.empty()) throw InputError("the setup has no material points");
+  if (an.mpData.empty()) throw InputError("the setup has no material points: its body is empty or lies outside its grid (check the size parameters in `ample " + an.name + " --help`)");
 }
 
 // a setup's problem must be consistent before any work (InputError: exit 2)
@@ -189,7 +197,14 @@ static void checkAnalysis(const Analysis& an) {
       throw InputError("material point " + std::to_string(p) + " at (" + std::to_string(x(0)) + ", " +
                        std::to_string(x(1)) + ") lies outside the background grid");
   }
-  if (an.mpData.empty()) throw InputError("the setup has no material points");
+  if (an.mpData.empty()) throw InputError("the setup has no material points: its body is empty or lies outside its grid (check the size parameters in `ample " + an.name + " --help`)");
+}
+
+// the largest lstps the setup allows (what to try after a failure must be a valid input)
+static int lstpsMax(const Params& P) {
+  for (const Param& p : P)
+    if (p.name == "lstps") return int(std::min(p.hi, 1e6));
+  return 1;
 }
 
 // the start of load step lstp: its progress line, its clock, the setup's hook
@@ -236,7 +251,8 @@ static void recordPass(RunLog& log, const std::vector<MaterialPoint>& mpData, in
       break;
     }
   throw NewtonFailure("load step " + std::to_string(lstp) + ", Newton-Raphson pass " +
-                      std::to_string(NRit) + ": the residual is not finite (NaN or Inf), " + where);
+                      std::to_string(NRit) + ": the residual is not finite (NaN or Inf), " + where,
+                      Failure::NotFinite);
 }
 
 // eq 35: fErr = |oobf| / |fext + frct|, with DBL_EPSILON added to each entry of the
@@ -259,39 +275,53 @@ static double normalisedResidual(const Eigen::VectorXd& oobf, const Eigen::Vecto
 // at its round-off floor (roundOffFloor.h: then no number of passes helps, a larger tol
 // does, and the message names one). Stalled: the last three residuals of the step within
 // a factor 3 of each other; at the floor: no more than 10 times the estimate (the
-// estimate is good to a factor of a few: roundOffFloor.h). uvw and load = fext + frct
-// (+ IB reactions) of the last pass are only read when the step failed. acceptFloor
-// (--accept-floor, off by default) accepts a step stalled at its floor as converged, said on
-// stderr; it acts only where the step has failed, so no run that converges changes.
+// estimate is good to a factor of a few: roundOffFloor.h) and at most maxFloor = 1e-6: a
+// step whose forces balance to fewer than six digits has not converged, whatever the
+// estimate says (an estimate near 1 means that eq 35's denominator is round-off itself,
+// e.g. E = 1e30 against a load of order 1). uvw and load = fext + frct (+ IB reactions) of
+// the last pass are only read when the step failed. acceptFloor (--accept-floor, off by
+// default) accepts a step stalled at its floor as converged, said on stderr; it acts only
+// where the step has failed, so no run that converges changes.
 static void checkConverged(const Analysis& an, const RunLog& log, int lstp, int NRit, double fErr,
                            const Eigen::VectorXd& uvw, const Eigen::VectorXd& load, bool acceptFloor) {
   if (fErr <= an.tol) return;
+  const double maxFloor = 1e-6;                                    // the largest credible floor
   char msg[600];
   int n = std::snprintf(msg, sizeof msg, "load step %d did not converge: fErr = %.3e > tol = %.1e "
                         "after %d Newton-Raphson passes (NRitMax = %d)", lstp, fErr, an.tol, NRit, an.NRitMax);
+  Failure kind = Failure::NotConverged;
   const size_t k = log.residuals.size();
-  if (k >= 3 && log.residuals[k - 3].lstp == lstp) {
-    const double r0 = log.residuals[k - 3].fErr, r1 = log.residuals[k - 2].fErr, r2 = fErr;
-    const double hi = std::max({r0, r1, r2}), lo = std::min({r0, r1, r2});
-    const double floor = hi < 3 * lo ? roundOffFloor(an.mpData, uvw, load) : 0.0;
-    if (hi < 3 * lo && hi <= 10 * floor) {
-      const int tolExp = int(std::ceil(std::log10(2 * hi)));       // 10^tolExp >= 2 x the stall
-      std::snprintf(msg + n, sizeof msg - n, "; the residual stalled at %.2e (its last three passes "
-                    "%.2e, %.2e, %.2e), its estimated round-off floor is %.1e (ample/roundOffFloor.h): "
-                    "more passes will not help, a tol above the floor would pass, e.g. tol=1e%d",
-                    hi, r0, r1, r2, floor, tolExp);
-      if (acceptFloor) {
-        std::fprintf(stderr, "ample: load step %d accepted at its round-off floor (--accept-floor): "
-                     "fErr = %.3e > tol = %.1e, stalled at %.2e, estimated floor %.1e\n",
-                     lstp, fErr, an.tol, hi, floor);
-        return;
-      }
-    } else if (r2 < r1 && r1 < r0 && r2 < 1e-3) {
-      std::snprintf(msg + n, sizeof msg - n, "; the residual was still falling (%.1e, %.1e, %.1e): "
-                    "more passes may converge, e.g. NRitMax=%d", r0, r1, r2, 2 * an.NRitMax);
+  const bool three = k >= 3 && log.residuals[k - 3].lstp == lstp;  // the step's last three passes
+  const double r0 = three ? log.residuals[k - 3].fErr : fErr, r1 = three ? log.residuals[k - 2].fErr : fErr;
+  const double hi = std::max({r0, r1, fErr}), lo = std::min({r0, r1, fErr});
+  const bool stalled = three && hi < 3 * lo;
+  const double floor = stalled || !three ? roundOffFloor(an.mpData, uvw, load) : 0.0;
+  if ((stalled || !three) && hi <= 10 * floor && hi <= maxFloor) {
+    kind = Failure::AtFloor;
+    const int tolExp = int(std::ceil(std::log10(2 * hi)));         // 10^tolExp >= 2 x the stall
+    n += stalled ? std::snprintf(msg + n, sizeof msg - n, "; the residual stalled at %.2e (its last three "
+                                 "passes %.2e, %.2e, %.2e), its estimated round-off floor is %.1e", hi, r0, r1,
+                                 fErr, floor)
+                 : std::snprintf(msg + n, sizeof msg - n, "; the residual %.2e is within 10 times its "
+                                 "estimated round-off floor %.1e", hi, floor);
+    std::snprintf(msg + n, sizeof msg - n, " (ample/roundOffFloor.h): more passes will not help, a tol "
+                  "above the floor would pass, e.g. tol=1e%d", tolExp);
+    if (acceptFloor && stalled) {
+      std::fprintf(stderr, "ample: load step %d accepted at its round-off floor (--accept-floor): "
+                   "fErr = %.3e > tol = %.1e, stalled at %.2e, estimated floor %.1e\n",
+                   lstp, fErr, an.tol, hi, floor);
+      return;
     }
+  } else if (stalled) {
+    kind = Failure::Stalled;
+    std::snprintf(msg + n, sizeof msg - n, "; the residual stalled at %.2e%s", hi,
+                  hi > maxFloor ? ", far above round-off (a floor is at most 1e-6)" : "");
+  } else if (three && fErr < r1 && r1 < r0 && fErr < 1e-3 && an.NRitMax < 1000) {
+    kind = Failure::StillFalling;
+    std::snprintf(msg + n, sizeof msg - n, "; the residual was still falling (%.1e, %.1e, %.1e): "
+                  "more passes may converge, e.g. NRitMax=%d", r0, r1, fErr, std::min(2 * an.NRitMax, 1000));
   }
-  throw NewtonFailure(msg);
+  throw NewtonFailure(msg, kind);
 }
 
 // one steps.csv row per attempt at a load step (its seconds are set at its end)

@@ -33,6 +33,8 @@ struct Analysis {
   int NRitMax = 10;                   // most Newton-Raphson passes per load step
   LinearSolver solver = LinearSolver::LU;  // Kt(fd,fd): SparseLU, or SimplicialLDLT when symmetric
   int substeps = 0;                   // halvings of a failed load step allowed (0: none)
+  std::string widerGrid;              // the setting that widens the grid, e.g. "width=32" (a
+                                      // point that leaves the grid: what to try; "" none)
   double ghost = 0;                   // ghost-penalty factor of the edge cells (0: none)
   int ghostFrom = 0;                  // first load step the penalty was needed (0: not yet)
   Formulation formulation = Formulation::UL;        // frame of equilibrium (seed 000)

@@ -109,7 +109,7 @@ int cellOf(const Mesh& mesh, const Vector2d& x) {
   msg << "material point at (" << x(0) << ", " << x(1) << ") has left the background "
       << meshName(mesh) << " (" << mesh.nels() << " cells in the box [" << lo(0) << ", " << hi(0)
       << "] x [" << lo(1) << ", " << hi(1) << "]): it lies in none of its cells";
-  throw RunError(msg.str());
+  throw RunError(msg.str(), Failure::LeftGrid);
 }
 
 // a CPDI domain corner: the cell that holds the corner moved 1e-6 of the way towards the

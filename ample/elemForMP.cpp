@@ -27,7 +27,7 @@ static int gridCells(const Mesh& mesh, const Vector2d& mpC, const Vector2d& lp,
       msg << "material point at (" << mpC(0) << ", " << mpC(1) << ") has left the background grid ["
           << mesh.origin(0) << ", " << mesh.origin(0) + mesh.nelsx * mesh.h(0) << "] x ["
           << mesh.origin(1) << ", " << mesh.origin(1) + mesh.nelsy * mesh.h(1) << "]";
-      throw RunError(msg.str());
+      throw RunError(msg.str(), Failure::LeftGrid);
     }
     // BEGIN EXERCISE elemForMP
     if (lp(i) > 0.0) {

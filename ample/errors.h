@@ -18,8 +18,20 @@ namespace ample {
 struct InputError : std::runtime_error {
   using std::runtime_error::runtime_error;
 };
+// what stopped a run, so that the message can say what to try (whatToTry, loadSteps.h)
+enum class Failure {
+  Other,          // named by its message alone
+  NotConverged,   // fErr > tol after NRitMax passes, no pattern recognised
+  Stalled,        // the residual stopped falling far above round-off
+  StillFalling,   // it was still falling: more passes (the message names NRitMax)
+  AtFloor,        // it stalled at its round-off floor: a larger tol (the message names one)
+  NotFinite,      // a NaN or Inf in the residual
+  Singular,       // Kt(fd,fd) could not be factorised or solved
+  LeftGrid        // a material point left the background grid
+};
 struct RunError : std::runtime_error {
-  using std::runtime_error::runtime_error;
+  Failure kind = Failure::Other;
+  explicit RunError(const std::string& what, Failure k = Failure::Other) : std::runtime_error(what), kind(k) {}
 };
 // the Newton-Raphson loop of a load step failed (no convergence, NaN, singular
 // stiffness): the one failure that a smaller load step may cure

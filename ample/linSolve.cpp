@@ -77,7 +77,7 @@ static Eigen::VectorXd factorisedSolve(FreeSystem& S, const Eigen::VectorXd& rhs
     S.umfpack.factorize(S.Kff);                         // numeric factorisation only
     if (S.umfpack.info() != Eigen::Success)
       throw RunError("UMFPACK could not factorise the stiffness Kt(fd,fd) (status " +
-                     std::to_string(S.umfpack.umfpackFactorizeReturncode()) + singular);
+                     std::to_string(S.umfpack.umfpackFactorizeReturncode()) + singular, Failure::Singular);
     return S.umfpack.solve(rhs);
   }
 #endif
@@ -92,7 +92,8 @@ static Eigen::VectorXd factorisedSolve(FreeSystem& S, const Eigen::VectorXd& rhs
   S.luAnalysed = true;
   S.lu.factorize(S.Kff);                                // numeric factorisation only
   if (S.lu.info() != Eigen::Success)
-    throw RunError("SparseLU could not factorise the stiffness Kt(fd,fd) (" + S.lu.lastErrorMessage() + singular);
+    throw RunError("SparseLU could not factorise the stiffness Kt(fd,fd) (" + S.lu.lastErrorMessage() + singular,
+                   Failure::Singular);
   return S.lu.solve(rhs);
 }
 
@@ -122,7 +123,7 @@ LinSolveOut linSolve(const std::vector<BC>& bc, const SpMat& Kt, const Eigen::Ve
   if (!(res <= 1e-3 * scale))                           // a zero pivot: no solution exists
     throw RunError("the stiffness Kt(fd,fd) is singular (linear solve residual " +
                    std::to_string(res / scale) + " of the right-hand side): a rigid-body mode "
-                   "without enough boundary conditions, or a nearly empty cell");
+                   "without enough boundary conditions, or a nearly empty cell", Failure::Singular);
   for (int r = 0; r < nfd; ++r) out.duvw(fd[r]) = x(r);
 
   const Eigen::VectorXd Ku = Kt * out.duvw;

@@ -40,12 +40,40 @@ void LoadSteps::retry(const Increment& inc, const RunError& e, Analysis& an, boo
     todo_.push_back(again);
     return;
   }
-  if (inc.depth >= substeps_) throw NewtonFailure(failure);       // the paper's way: the run stops
+  if (inc.depth >= substeps_) throw NewtonFailure(failure, e.kind);  // the paper's way: the run stops
   restoreConverged(an.mpData);                                    // remedy 2: halves
   if (!quiet) std::printf("  %s: retrying with half the increment\n", failure.c_str());
   const double mid = 0.5 * (inc.lf0 + inc.lf1);
   todo_.push_back({inc.lstp, mid, inc.lf1, inc.depth + 1, false, inc.last, ""});  // second half
   todo_.push_back({inc.lstp, inc.lf0, mid, inc.depth + 1, false, false, ""});     // first half
+}
+
+static std::string smallerSteps(const Analysis& an, int lstpsMax) {
+  const std::string lstps = 2 * an.lstps <= lstpsMax ? "lstps=" + std::to_string(2 * an.lstps) : "";
+  if (an.substeps >= 30) return lstps.empty() ? "" : "; try " + lstps;
+  const std::string sub = "substeps=" + std::to_string(an.substeps ? std::min(30, 2 * an.substeps) : 4) +
+                          " (a failed load step is retried in halves)";
+  return "; try " + sub + (lstps.empty() ? "" : " or " + lstps);
+}
+
+std::string whatToTry(const RunError& e, const Analysis& an, int lstpsMax) {
+  switch (e.kind) {
+    case Failure::NotConverged:
+    case Failure::Stalled:
+    case Failure::NotFinite: return smallerSteps(an, lstpsMax);
+    case Failure::Singular:
+      if (!an.mesh.regular()) return "; try more points per cell (mp), or check the boundary conditions";
+      if (an.ghost > 0 && an.ghost < 1e3)
+        return "; try a larger ghost penalty, ghost=" + std::to_string(std::min(1e3, 10 * an.ghost)) +
+               ", or more points per cell (mp)";
+      return an.ghost > 0 ? "; try more points per cell (mp), or check the boundary conditions"
+                          : "; try ghost=0.01 (the ghost penalty pins the nearly free nodes of barely "
+                            "filled cells), or check the boundary conditions";
+    case Failure::LeftGrid:
+      return an.widerGrid.empty() ? "; the setup's grid has no room for this motion" + smallerSteps(an, lstpsMax)
+                                  : "; try a wider grid, " + an.widerGrid;
+    default: return "";
+  }
 }
 
 void restoreConverged(std::vector<MaterialPoint>& mpData) {

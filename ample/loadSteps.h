@@ -50,6 +50,13 @@ class LoadSteps {
   std::vector<Increment> todo_;  // halves still to solve, the next one at the back
 };
 
+// what to try after a failure of kind e.kind, e.g. "; try substeps=4 (...) or lstps=80":
+// smaller load steps for a step that did not converge or went non-finite, the ghost
+// penalty for a singular stiffness, the setup's wider grid (an.widerGrid) for a point
+// that left it; "" where the message already names its remedy (NRitMax, tol).
+// lstpsMax: the largest lstps the setup allows
+std::string whatToTry(const RunError& e, const Analysis& an, int lstpsMax);
+
 // undo the point loop's trial state (F, epsE, sig) back to the converged one
 void restoreConverged(std::vector<MaterialPoint>& mpData);
 

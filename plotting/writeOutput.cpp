@@ -6,6 +6,7 @@
 #include "writeOutput.h"
 #include "ample/errors.h"
 #include "makeVtk.h"
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <sstream>
@@ -28,12 +29,42 @@ void prepareOutput(const std::string& outDir) {
   }
 }
 
+// a residual that went NaN or Inf is written as the status not_finite, never as nan
+static std::string residualText(double fErr) {
+  if (!std::isfinite(fErr)) return "not_finite";
+  std::ostringstream s;
+  s.precision(17);
+  s << fErr;
+  return s.str();
+}
+
+// JSON has no NaN or Inf: a number that is not finite is null (its reason written beside it)
+static std::string jsonNumber(double v) {
+  if (!std::isfinite(v)) return "null";
+  std::ostringstream s;
+  s.precision(17);
+  s << v;
+  return s.str();
+}
+
+static std::string jsonString(const std::string& text) {
+  std::string s = "\"";
+  for (const char c : text) {
+    if (c == '"' || c == '\\') s += std::string("\\") + c;
+    else if (c == '\n') s += "\\n";
+    else if (c == '\t') s += "\\t";
+    else if (static_cast<unsigned char>(c) < 0x20) s += ' ';
+    else s += c;
+  }
+  return s + "\"";
+}
+
 static std::string stepsCsv(const RunLog& log) {
   std::ostringstream s;
   s.precision(17);
   s << "lstp,load_factor,NRit,fErr,converged,seconds\n";
   for (const StepRow& r : log.steps)
-    s << r.lstp << "," << r.loadFactor << "," << r.NRit << "," << r.fErr << ","
+    s << r.lstp << "," << r.loadFactor << "," << r.NRit << "," << residualText(r.fErr) << ","
       << (r.converged ? 1 : 0) << "," << r.seconds << "\n";
   return s.str();
 }
@@ -42,7 +73,8 @@ static std::string residualsCsv(const RunLog& log) {
   std::ostringstream s;
   s.precision(17);
   s << "lstp,NRit,fErr\n";
-  for (const ResidualRow& r : log.residuals) s << r.lstp << "," << r.NRit << "," << r.fErr << "\n";
+  for (const ResidualRow& r : log.residuals)
+    s << r.lstp << "," << r.NRit << "," << residualText(r.fErr) << "\n";
   return s.str();
 }
 
@@ -72,37 +104,57 @@ static std::string mpFinalCsv(const Analysis& an) {
   return s.str();
 }
 
+// the setup's figures: a non-finite one is null, and "results_undefined" says why
+static std::string resultsJson(const Results& res) {
+  std::ostringstream s, why;
+  s << "{";
+  for (size_t i = 0; i < res.size(); ++i) {
+    s << (i ? ", " : "") << jsonString(res[i].first) << ": " << jsonNumber(res[i].second);
+    if (std::isfinite(res[i].second)) continue;
+    std::string reason = "not finite (a division by zero or an overflow in the setup's measure)";
+    for (const auto& w : res.why)
+      if (w.first == res[i].first) reason = w.second;
+    why << (why.tellp() > 0 ? ", " : "") << jsonString(res[i].first) << ": " << jsonString(reason);
+  }
+  s << "}";
+  if (why.tellp() > 0) s << ",\n  \"results_undefined\": {" << why.str() << "}";
+  return s.str();
+}
+
 static std::string summaryJson(const Setup& setup, const Params& P, const Analysis& an,
                                const RunLog& log, const Results& res) {
   std::ostringstream s;
   s.precision(17);
-  s << "{\n  \"setup\": \"" << setup.name << "\",\n  \"parameters\": {";
-  for (size_t i = 0; i < P.size(); ++i) s << (i ? ", " : "") << "\"" << P[i].name << "\": " << P[i].value;
+  s << "{\n  \"setup\": " << jsonString(setup.name) << ",\n  \"parameters\": {";
+  for (size_t i = 0; i < P.size(); ++i) s << (i ? ", " : "") << jsonString(P[i].name) << ": " << jsonNumber(P[i].value);
   s << "},\n  \"nmp\": " << an.mpData.size() << ",\n  \"nodes\": " << an.mesh.nodes()
     << ",\n  \"nDoF\": " << an.mesh.nDoF() << ",\n  \"lstps\": " << an.lstps
     << ",\n  \"total_NR_iterations\": " << log.totalNRit
     << ",\n  \"solver_analyses\": " << log.solverAnalyses << ",\n  \"lu_fallbacks\": " << log.luFallbacks
     << ",\n  \"converged\": " << (log.converged ? "true" : "false")
     << ",\n  \"completed\": " << (log.converged ? "true" : "false")
-    << ",\n  \"last_converged_step\": " << log.lastConverged << ",\n  \"message\": \"";
-  for (char c : log.message) s << (c == '"' || c == '\\' ? '\'' : c);
+    << ",\n  \"last_converged_step\": " << log.lastConverged
+    << ",\n  \"message\": " << jsonString(log.message);
   const Timers& t = log.t;
-  s << "\",\n  \"wall_seconds\": " << t.total << ",\n  \"seconds\": {\"elemMPinfo\": "
+  s << ",\n  \"wall_seconds\": " << t.total << ",\n  \"seconds\": {\"elemMPinfo\": "
     << t.elemMPinfo << ", \"detExtForce\": " << t.detExtForce << ", \"detFDoFs\": " << t.detFDoFs
     << ", \"detMPs\": " << t.detMPs << ", \"linSolve\": " << t.linSolve << ", \"updateMPs\": "
-    << t.updateMPs << ", \"postPro\": " << t.postPro << "},\n  \"results\": {";
-  for (size_t i = 0; i < res.size(); ++i)
-    s << (i ? ", " : "") << "\"" << res[i].first << "\": " << res[i].second;
-  s << "}";
+    << t.updateMPs << ", \"postPro\": " << t.postPro << "},\n  \"results\": " << resultsJson(res);
   for (const auto& r : res)
-    if (r.first == "error") s << ",\n  \"error\": " << r.second;
+    if (r.first == "error") s << ",\n  \"error\": " << jsonNumber(r.second);
   s << "\n}\n";
   return s.str();
 }
 
 void writeOutput(const Setup& setup, const Params& P, const Analysis& an, const RunLog& log,
                  const std::string& outDir, bool quiet) {
-  const Results res = setup.results ? setup.results(an, P) : Results{};
+  Results res;
+  try {                    // a setup's figures of a state it cannot measure must not lose the files
+    if (setup.results) res = setup.results(an, P);
+  } catch (const RunError& e) {
+    res = {{"results", NAN}};
+    res.undefined("results", std::string("the setup's figures could not be computed: ") + e.what());
+  }
   atomicWrite(outDir + "/steps.csv", stepsCsv(log));
   atomicWrite(outDir + "/residuals.csv", residualsCsv(log));
   atomicWrite(outDir + "/mp_final.csv", mpFinalCsv(an));
@@ -111,7 +163,13 @@ void writeOutput(const Setup& setup, const Params& P, const Analysis& an, const 
   if (quiet) return;
   std::printf("%s: %s after %d load steps, %d Newton-Raphson passes, %.3f s\n", setup.name,
               log.converged ? "converged" : "STOPPED", log.lastConverged, log.totalNRit, log.t.total);
-  for (const auto& r : res) std::printf("  %-14s %.10g\n", r.first.c_str(), r.second);
+  for (const auto& r : res) {
+    std::string why = "not finite";
+    for (const auto& w : res.why)
+      if (w.first == r.first) why = w.second;
+    if (std::isfinite(r.second)) std::printf("  %-14s %.10g\n", r.first.c_str(), r.second);
+    else std::printf("  %-14s undefined: %s\n", r.first.c_str(), why.c_str());
+  }
 }
 
 }  // namespace ample

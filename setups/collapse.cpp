@@ -40,6 +40,7 @@ Analysis setupGrid(const Params& P) {
   an.g = get(P, "g");
   const int nelsx = int(std::ceil(get(P, "width") * a / 2.0 - 1e-9));  // h = 2 m / a
   an.mesh = formCoord2D(nelsx, 4 * a, nelsx * 2.0 / a, 8);
+  if (get(P, "width") < 1000) an.widerGrid = "width=" + number(std::min(1000.0, 2 * get(P, "width")));
   const double eps = 1e-9 * an.mesh.h(0);
   if (get(P, "supports") == 1) {
     fixDofs(an.mesh, 0, [&](double X, double) { return X < eps; });  // left edge

@@ -48,7 +48,12 @@ Results results(const Analysis& an, const Params& P) {
     err += std::abs(mp.sig(1) - sigA) * mp.vp0;
     V0 += mp.vp0;
   }
-  return {{"error", err / (rho * g * l0 * V0)}};    // eq 37
+  Results r{{"error", err / (rho * g * l0 * V0)}};  // eq 37
+  if (rho * g == 0) {                                // no load: eq 37 is 0 / 0
+    r[0].second = NAN;
+    r.undefined("error", "no load (rho g = 0): eq 37 divides by rho g l0");
+  }
+  return r;
 }
 
 }  // namespace ample::compaction

@@ -36,6 +36,7 @@
 #include "ample/formCoord2D.h"
 #include "setupHelpers.h"
 #include <cmath>
+#include <cstdio>
 
 namespace ample::ibcantilever {
 
@@ -64,8 +65,19 @@ static double beamTheory(double x, double b, double E, double nu) {
 
 // the grid node of the origin and the grid (cells) that holds the turned room
 struct Layout { Vector2d O; int nelsx, nelsy; };
+// The room grows with the deflection b / E: a tip deflection above the beam's length L is
+// outside small-strain beam theory and would size the grid without bound, so it is refused
+// (InputError naming b and E and the values that fit).
 static Layout layout(const Params& P) {
-  const double h = get(P, "h"), w = beamTheory(0, get(P, "b"), get(P, "E"), get(P, "nu"));
+  const double h = get(P, "h"), b = get(P, "b"), E = get(P, "E");
+  const double w = beamTheory(0, b, E, get(P, "nu"));
+  if (!(w <= L)) {                                                   // (also NaN)
+    char msg[400];
+    std::snprintf(msg, sizeof msg, "b = %g N/m3 with E = %g Pa: beam theory's tip deflection %.3g m exceeds "
+                  "the beam's length L = 0.1 m (the grid is sized from it): use b <= %.3g or E >= %.3g",
+                  b, E, w, b * L / w, E * w / L);
+    throw InputError(msg);
+  }
   const double slope = 2 * w / L;                                    // > the tip rotation
   const double x0 = -(1.3 * slope * d + 2 * h), y0 = -(1.3 * w + 2 * h);  // room to deflect
   const Eigen::Matrix2d R = rotationDegrees(get(P, "theta"));
@@ -127,8 +139,13 @@ Results results(const Analysis& an, const Params&) {
   for (const auto& kv : an.history.back())
     if (kv.first != "lstp" && kv.first != "load_factor") r.push_back(kv);
   const auto v = [&](const char* k) { for (const auto& kv : r) if (kv.first == k) return kv.second; return 0.0; };
-  r.push_back({"tip_v_over_beam", v("tip_v") / v("tip_v_beam")});
-  r.push_back({"reaction_error", std::abs(v("R_y") + v("F_y")) / std::abs(v("F_y"))});
+  const bool load = v("F_y") != 0 && v("tip_v_beam") != 0;
+  r.push_back({"tip_v_over_beam", load ? v("tip_v") / v("tip_v_beam") : NAN});
+  r.push_back({"reaction_error", load ? std::abs(v("R_y") + v("F_y")) / std::abs(v("F_y")) : NAN});
+  if (!load) {
+    r.undefined("tip_v_over_beam", "no load (b = 0): beam theory's deflection is 0");
+    r.undefined("reaction_error", "no load (b = 0): the error is relative to F_y = 0");
+  }
   r.push_back({"points", double(an.mpData.size())});
   return r;
 }

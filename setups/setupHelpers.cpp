@@ -10,6 +10,7 @@
 #include "ample/shapefunc.h"
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <fstream>
 #include <sstream>
 #include <string>
@@ -76,6 +77,12 @@ static double availableBytes() {
     if (key == "MemAvailable:") return kB * 1024;
     else in.ignore(256, '\n');
   return 0;
+}
+
+std::string number(double v) {
+  char s[32];
+  std::snprintf(s, sizeof s, "%.6g", v);
+  return s;
 }
 
 void checkPointMemory(size_t points) {

@@ -35,6 +35,9 @@ namespace ample {
 // formulation, domainUpdate (g is set by the setups that have gravity)
 Analysis baseAnalysis(const Params& P);
 
+// a parameter value as the command line takes it, e.g. number(32) = "32", number(0.01) = "0.01"
+std::string number(double v);
+
 // InputError before any work when `points` material points (2 x sizeof(MaterialPoint) each:
 // the point and its converged copy) exceed the memory this machine has available
 void checkPointMemory(size_t points);

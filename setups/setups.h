@@ -48,7 +48,14 @@ using Params = std::vector<Param>;
 double get(const Params& P, const std::string& name);  // value of a parameter
 std::string rangeText(const Param& p);                 // e.g. "(0, inf)" or "integer in [1, 64]"
 
-using Results = std::vector<std::pair<std::string, double>>;  // named figures of a run
+// the named figures of a run; a figure that is undefined for this run (e.g. a relative
+// error with no load: 0 / 0) is NaN with its reason in `why`, and summary.json writes it as
+// null with that reason ("results_undefined"), never as a bare nan or inf
+struct Results : std::vector<std::pair<std::string, double>> {
+  using vector::vector;
+  std::vector<std::pair<std::string, std::string>> why;  // figure name -> why it is undefined
+  void undefined(const std::string& name, const std::string& reason) { why.emplace_back(name, reason); }
+};
 
 struct Setup {
   const char* name;

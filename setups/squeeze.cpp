@@ -43,6 +43,7 @@ Analysis setupGrid(const Params& P) {
   const double h = H / nels;                                     // square cells
   Analysis an = baseAnalysis(P);
   an.mesh = formCoord2D(nels + margin, nels, (nels + margin) * h, H);
+  if (margin < 64) an.widerGrid = "margin=" + std::to_string(std::min(64, 2 * margin));
   const double eps = 1e-9 * h, dv = -get(P, "squash") * H / an.lstps;
   fixDofs(an.mesh, 0, [&](double X, double) { return X < eps; });      // left: symmetry
   fixDofs(an.mesh, 1, [&](double, double Y) { return Y < eps; });      // base: rollers
@@ -69,8 +70,14 @@ Results results(const Analysis& an, const Params& P) {
                     std::abs(mp.sig(3)) / std::abs(sA),
                     std::abs(mp.u(0) - gX * mp.X0(0)) / std::abs(eYY),
                     std::abs(mp.u(1) - gY * mp.X0(1)) / std::abs(eYY)});
-  return {{"error", err}, {"sigma_yy", an.mpData[0].sig(1)}, {"sigma_yy_a", sA},
-          {"force", an.history.back()[2].second}, {"force_a", an.history.back()[3].second}};
+  Results r{{"error", err}, {"sigma_yy", an.mpData[0].sig(1)}, {"sigma_yy_a", sA}};
+  if (sA == 0) {                                                 // no load: 0 / 0
+    r[0].second = NAN;
+    r.undefined("error", "no load (squash = 0): the error is relative to sigma_yy,a = 0");
+  }
+  if (!an.history.empty())                                       // (none when no step converged)
+    r.insert(r.end(), {{"force", an.history.back()[2].second}, {"force_a", an.history.back()[3].second}});
+  return r;
 }
 
 }  // namespace ample::squeeze

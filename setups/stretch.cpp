@@ -85,8 +85,13 @@ Results results(const Analysis& an, const Params&) {
     diff = std::max(diff, std::abs(row[1].second - row[2].second));
     refMax = std::max(refMax, std::abs(row[2].second));
   }
-  return {{"reaction", an.history.back()[1].second}, {"reference", an.history.back()[2].second},
-          {"max_rel_difference", diff / refMax}};
+  Results r{{"reaction", an.history.back()[1].second}, {"reference", an.history.back()[2].second},
+            {"max_rel_difference", diff / refMax}};
+  if (refMax == 0) {                                             // no load: 0 / 0
+    r[2].second = NAN;
+    r.undefined("max_rel_difference", "no load (du = 0): the reference reaction is 0");
+  }
+  return r;
 }
 
 }  // namespace ample::stretch
