@@ -80,7 +80,7 @@ static void pointBasis(const Mesh& mesh, MaterialPoint& mp, size_t p, bool keepC
     else if (isCPDI(mp)) mp.ne = cellsOfCorners(mesh, mp, mp.eIN);
     else mp.ne = elemForMP(mesh, mp.mpC, mp.lp, mp.eIN);
   } catch (const RunError& e) {
-    throw RunError("point " + std::to_string(p) + ": " + e.what());
+    throw RunError("point " + std::to_string(p) + ": " + e.what(), e.kind);
   }
   mp.nn = nodesForMP(mesh, mp.eIN, mp.ne, mp.nIN);
   MPMbasis(mesh, mp);

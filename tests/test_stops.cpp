@@ -1,0 +1,152 @@
+// Tests of how a run ends when it cannot finish (ample.cpp, loadSteps.cpp whatToTry,
+// writeOutput.cpp, the setups' results): every exit path leaves complete, valid output, a
+// figure that is undefined is null with its reason, and each stop message names a remedy
+// that, followed, completes the run.
+#include "ample/ample.h"
+#include "ample/errors.h"
+#include "testProblems.h"
+#include <doctest/doctest.h>
+#include <cmath>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <regex>
+#include <string>
+#include <sys/wait.h>
+#include <unistd.h>
+
+using namespace ample;
+
+namespace {
+struct Run {
+  int code;             // exit status
+  std::string err;      // stderr
+  std::string dir;      // output folder
+};
+// the program on `args` (--quiet --vtk 0 and its own output folder added)
+Run runProgram(const std::string& args, const std::string& name) {
+  const std::string dir = std::string(AMPLE_TEST_TMP) + "/stops_" + name;
+  std::filesystem::create_directories(AMPLE_TEST_TMP);
+  const std::string err = dir + ".err";
+  const std::string cmd = std::string(AMPLE_BINARY) + " " + args + " --quiet --vtk 0 --out " + dir +
+                          " >/dev/null 2>" + err;
+  const int st = std::system(cmd.c_str());
+  Run r{WIFEXITED(st) ? WEXITSTATUS(st) : -1, testing::fileText(err), dir};
+  if (r.code == 3) throw ExerciseNotDone("(the student copy): " + r.err);
+  return r;
+}
+// the value after `key=` in a message, e.g. "ghost=0.01" for key "ghost"
+std::string advised(const std::string& message, const std::string& key) {
+  std::smatch m;
+  const std::regex re("\\b" + key + "=([-+0-9.e]+)");
+  return std::regex_search(message, m, re) ? m[1].str() : "";
+}
+// a token no JSON parser reads, or a NaN/Inf written by a C++ stream
+bool hasNonFinite(const std::string& text) {
+  return std::regex_search(text, std::regex("(^|[^A-Za-z_])-?(nan|inf|NaN|Inf|Infinity)([^A-Za-z_]|$)"));
+}
+}  // namespace
+
+TEST_SUITE("stops") {
+  TEST_CASE("stops: every setup's results() measures any state, none converged included") {
+    for (const Setup& s : setupsTable()) {
+      CAPTURE(s.name);
+      Params P = s.params();
+      if (std::string(s.name) == "ibcantilever") setDefault(P, "h", 0.005), setDefault(P, "mp", 2);
+      const Analysis an = s.setupGrid(P);                 // no step taken: uvw, history empty
+      const Results r = s.results(an, P);
+      for (const auto& f : r) {
+        CAPTURE(f.first);
+        bool why = false;
+        for (const auto& w : r.why) why = why || w.first == f.first;
+        CHECK((std::isfinite(f.second) || why));          // finite, or undefined with a reason
+      }
+    }
+  }
+
+  TEST_CASE("stops: a zero load gives null figures with their reason, and JSON without NaN") {
+    const Run r = runProgram("compaction nelsy=4 rho=0", "noload");
+    REQUIRE(r.code == 0);
+    const std::string json = testing::fileText(r.dir + "/summary.json");
+    CHECK_FALSE(hasNonFinite(json));
+    CHECK(json.find("\"error\": null") != std::string::npos);
+    CHECK(json.find("\"results_undefined\": {\"error\": \"no load") != std::string::npos);
+  }
+
+  TEST_CASE("stops: a run that fails in its first step leaves summary, steps and the initial state") {
+    const Run r = runProgram("squeeze tol=1e-30 NRitMax=2", "firststep");
+    REQUIRE(r.code == 1);
+    const std::string json = testing::fileText(r.dir + "/summary.json");
+    CHECK(json.find("\"converged\": false") != std::string::npos);
+    CHECK(json.find("\"last_converged_step\": 0") != std::string::npos);
+    CHECK(json.find("load step 1 did not converge") != std::string::npos);
+    CHECK_FALSE(hasNonFinite(json));
+    const testing::CsvTable steps = testing::readCsvTable(r.dir + "/steps.csv");
+    REQUIRE(steps.rows.size() == 1);
+    CHECK(steps.at(0, "converged") == 0);
+    const testing::CsvTable mp = testing::readCsvTable(r.dir + "/mp_final.csv");
+    REQUIRE(mp.rows.size() == 64);                        // nels = 4: 4 x 4 cells x 2 x 2 points
+    for (size_t p = 0; p < mp.rows.size(); ++p) {         // the initial state: nothing moved
+      CHECK(mp.at(p, "x") == mp.at(p, "X0"));
+      CHECK(mp.at(p, "y") == mp.at(p, "Y0"));
+      CHECK(mp.at(p, "syy") == 0.0);
+    }
+  }
+
+  TEST_CASE("stops: a non-finite residual is written as the status not_finite") {
+    const Run r = runProgram("compaction nelsy=64 lstps=1", "notfinite");
+    REQUIRE(r.code == 1);
+    CHECK(r.err.find("the residual is not finite") != std::string::npos);
+    const std::string res = testing::fileText(r.dir + "/residuals.csv");
+    CHECK(res.find(",not_finite\n") != std::string::npos);
+    CHECK_FALSE(hasNonFinite(res));
+    CHECK_FALSE(hasNonFinite(testing::fileText(r.dir + "/steps.csv")));
+    // what to try: halves of the failed step, or twice the load steps; each completes the run
+    CHECK(advised(r.err, "substeps") == "4");
+    CHECK(advised(r.err, "lstps") == "2");
+    CHECK(runProgram("compaction nelsy=64 lstps=1 substeps=4", "notfinite_sub").code == 0);
+  }
+
+  TEST_CASE("stops: a residual stalled far above round-off is never accepted at a floor") {
+    // E = 1e30 against a load of order 1e4: fErr stays 1.0; its floor estimate is ~5e10
+    const Run r = runProgram("compaction nelsy=4 lstps=2 E=1e30 --accept-floor", "nofloor");
+    CHECK(r.code == 1);
+    CHECK(r.err.find("accepted at its round-off floor") == std::string::npos);
+    CHECK(r.err.find("far above round-off") != std::string::npos);
+    CHECK(advised(r.err, "tol").empty());                 // no tol is advised: none would help
+  }
+
+  TEST_CASE("stops: the tol advised at a round-off floor is inside tol's range and passes") {
+    const Run r = runProgram("deepbeam h=0.02 mp=2 NRitMax=2 tol=1e-20", "tol");
+    REQUIRE(r.code == 1);
+    const std::string tol = advised(r.err, "tol");
+    REQUIRE_FALSE(tol.empty());
+    CHECK(std::stod(tol) < 1e-6);                         // (0, 1), and at most 1e-6 (maxFloor)
+    CHECK(runProgram("deepbeam h=0.02 mp=2 NRitMax=2 tol=" + tol, "tol_followed").code == 0);
+  }
+
+  TEST_CASE("stops: a singular stiffness names the ghost penalty, which completes the run") {
+    const Run r = runProgram("ibcantilever h=0.01 mp=2", "singular");
+    REQUIRE(r.code == 1);
+    CHECK(r.err.find("singular") != std::string::npos);
+    REQUIRE(advised(r.err, "ghost") == "0.01");
+    CHECK(runProgram("ibcantilever h=0.01 mp=2 ghost=0.01", "singular_ghost").code == 0);
+  }
+
+  TEST_CASE("stops: a point that leaves the grid names the setup's wider grid, which completes the run") {
+    const Run r = runProgram("collapse width=9", "leftgrid");
+    REQUIRE(r.code == 1);
+    CHECK(r.err.find("has left the background grid") != std::string::npos);
+    REQUIRE(advised(r.err, "width") == "18");
+    CHECK(runProgram("collapse width=18", "leftgrid_wider").code == 0);
+  }
+
+  TEST_CASE("stops: ibcantilever refuses a load whose beam deflection would size the grid without bound") {
+    const Run r = runProgram("ibcantilever E=556278", "unbounded");
+    CHECK(r.code == 2);
+    CHECK(r.err.find("b = 2e+08 N/m3 with E = 556278 Pa") != std::string::npos);
+    CHECK(r.err.find("exceeds the beam's length L = 0.1 m") != std::string::npos);
+    CHECK(r.err.find("E >= 7.14e+08") != std::string::npos);
+    CHECK_FALSE(std::filesystem::exists(r.dir + "/summary.json"));
+  }
+}
