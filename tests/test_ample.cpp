@@ -276,3 +276,52 @@ TEST_SUITE("ample") {
     CHECK(r[2] == doctest::Approx(1.626e-09).epsilon(5e-4).scale(0));
   }
 }
+
+// eq 35 in the passes after the first solve: |oobf| / |fext + frct|, frct the reactions of
+// this pass (only pass 0 of a step without loads takes the last step's reactions). The
+// stretch setup (E = 1000, nu = 0, L0 = H = 2 m, du = 0.2 m a step) is elastic up to step 6
+// and homogeneous: with nu = 0 the Hencky stress of x = diag(lam, 1) X is tau_xx = E ln lam,
+// tau_yy = 0 (free top, no vertical stretch), sigma_xx = E ln(lam) / lam, and every nodal force
+// vector of the pulled and the fixed side is the same pattern times the resultant
+// R(lam) = H E ln(lam) / lam. Pass 1 of step k applies the whole uniform increment (the
+// homogeneous field solves the linearised free rows), from lam_a = 1 + 0.1 (k - 1) to
+// lam_b = lam_a + 0.1, so by hand
+//   frct = R(lam_a) + R'(lam_a) 0.1 (last state + tangent times increment),
+//   oobf = frct - R(lam_b) (on the same pattern; the free rows balance),
+//   fErr = |R(lam_a) + 0.1 R'(lam_a) - R(lam_b)| / |R(lam_a) + 0.1 R'(lam_a)|,
+// R'(lam) = H E (1 - ln lam) / lam^2. Step 2: 0.058723; with the last step's reactions
+// R(lam_a) as denominator it would be 0.109402. Pass 0 of steps k >= 2 (no load, nothing
+// applied yet) is R(lam_a) / R(lam_a) = 1. Tolerance 1e-9 relative (the steps converge to 1e-14)
+TEST_SUITE("ample") {
+  TEST_CASE("ample: stretch's pass-1 residuals (eq 35) are the hand values normalised by this pass's reactions") {
+    const double E = 1000, H = 2, dlam = 0.1;
+    const auto R = [&](double lam) { return H * E * std::log(lam) / lam; };
+    const auto dR = [&](double lam) { return H * E * (1 - std::log(lam)) / (lam * lam); };
+    // the hand value itself, step 2: ln 1.1 = 0.0953102, ln 1.2 = 0.1823216
+    CHECK(std::abs(R(1.1) + dlam * dR(1.1) - R(1.2)) / (R(1.1) + dlam * dR(1.1)) ==
+          doctest::Approx(0.058723).epsilon(1e-5));
+    for (int t = 1; t <= 4; ++t) {
+      CAPTURE(t);
+      RunLog log;
+      runSetup("stretch", {{"mpType", t}, {"lstps", 6}}, log);
+      for (int k = 1; k <= 6; ++k) {
+        CAPTURE(k);
+        const double la = 1 + dlam * (k - 1), lb = la + dlam;
+        const double frct = R(la) + dlam * dR(la), hand = std::abs(frct - R(lb)) / frct;
+        int seen = 0;
+        for (const ResidualRow& row : log.residuals) {
+          if (row.lstp != k) continue;
+          if (row.NRit == 1) {
+            CHECK(row.fErr == doctest::Approx(hand).epsilon(1e-9));
+            ++seen;
+          }
+          if (row.NRit == 0 && k >= 2) {
+            CHECK(row.fErr == doctest::Approx(1.0).epsilon(1e-9));
+            ++seen;
+          }
+        }
+        CHECK(seen == (k >= 2 ? 2 : 1));
+      }
+    }
+  }
+}

@@ -2,11 +2,15 @@
 // pass and the first bad point; a failed load step can be rescued by sub-division.
 #include "ample/ample.h"
 #include "ample/errors.h"
+#include "ample/formCoord2D.h"
+#include "ample/ghostPenalty.h"
 #include "ample/loadSteps.h"
 #include "testProblems.h"
 #include <doctest/doctest.h>
 #include <cmath>
+#include <filesystem>
 #include <fstream>
+#include <set>
 
 using namespace ample;
 
@@ -343,5 +347,186 @@ TEST_SUITE("robustness") {
     }
     const Analysis an = runAll("collapse", {{"a", 1}, {"mpType", 1}, {"NRitMax", 20}});  // completes
     CHECK(an.mpData.size() == 4 * 4 * 9);
+  }
+}
+
+// A sub-divided load step is one load step to everything after its Newton-Raphson loops:
+// steps.csv records every attempt (the failed one converged = 0, then its halves, a failed
+// half halved again, each half's load factor the end of its part of the step), but the
+// setup's afterStep (history.csv) and postPro (mpData_<lstp>.vtk) run once, at the end of
+// the whole step. The 5-step beam at h = 0.5 m with 2 x 2 points fails step 2 whole
+// (load factor 0.4; measured: 0.4 fails, 0.3 fails, 0.25, 0.3, 0.4 converge). The expected
+// attempts are replayed here from the halving rule of loadSteps.h (last in, first out),
+// whatever pattern of failures the run takes. The tip of every mpData_<lstp>.vtk (mean
+// displacement of the two loaded points, X0 = (9.875, 9.375) and (9.875, 9.625)) must be
+// that of history row lstp to 1e-12 m (VTK ASCII: 15 digits), and the last VTK the points of
+// mp_final.csv
+TEST_SUITE("robustness") {
+  TEST_CASE("robustness: a sub-divided load step writes every attempt to steps.csv / one history row and one VTK file") {
+    const int lstps = 5;
+    const Setup* s = findSetup("beam");
+    Params P = s->params();
+    const std::vector<std::pair<std::string, double>> set = {{"a", 1}, {"mp", 2}, {"lstps", lstps}, {"substeps", 8}};
+    for (const auto& kv : set) setDefault(P, kv.first, kv.second);
+    const std::string dir = std::string(AMPLE_TEST_TMP) + "/subdivided_beam";
+    REQUIRE(ample::ample(*s, P, RunOptions{dir, 1, true}) == 0);
+
+    const testing::CsvTable steps = testing::readCsvTable(dir + "/steps.csv");
+    struct Part { int lstp; double lf0, lf1; };
+    std::vector<Part> todo;  // the parts still to solve, the next one at the back
+    int lstp = 0, failed = 0;
+    for (size_t r = 0; r < steps.rows.size(); ++r) {
+      CAPTURE(r);
+      if (todo.empty()) {
+        ++lstp;
+        todo.push_back({lstp, double(lstp - 1) / lstps, double(lstp) / lstps});
+      }
+      const Part p = todo.back();
+      todo.pop_back();
+      CHECK(steps.at(r, "lstp") == p.lstp);
+      CHECK(steps.at(r, "load_factor") == doctest::Approx(p.lf1).epsilon(1e-14));
+      if (steps.at(r, "converged") == 0) {  // its halves: the first one next
+        ++failed;
+        const double mid = 0.5 * (p.lf0 + p.lf1);
+        todo.push_back({p.lstp, mid, p.lf1});
+        todo.push_back({p.lstp, p.lf0, mid});
+      } else {
+        CHECK(steps.at(r, "converged") == 1);
+      }
+    }
+    CHECK(todo.empty());
+    CHECK(lstp == lstps);
+    CHECK(failed >= 1);                       // the run did need sub-division
+    CHECK(steps.rows.size() > size_t(lstps));  // one row per attempt
+
+    const testing::CsvTable hist = testing::readCsvTable(dir + "/history.csv");
+    REQUIRE(hist.rows.size() == size_t(lstps));  // one row per load step, not per part
+    std::set<std::string> vtk;
+    for (const auto& f : std::filesystem::directory_iterator(dir)) {
+      const std::string n = f.path().filename().string();
+      if (n.rfind("mpData_", 0) == 0) vtk.insert(n);
+    }
+    std::set<std::string> whole;
+    for (int k = 1; k <= lstps; ++k) whole.insert("mpData_" + std::to_string(k) + ".vtk");
+    CHECK(vtk == whole);
+    for (int k = 1; k <= lstps; ++k) {
+      CAPTURE(k);
+      CHECK(hist.at(k - 1, "lstp") == k);
+      CHECK(hist.at(k - 1, "load_factor") == doctest::Approx(double(k) / lstps).epsilon(1e-14));
+      const testing::VtkPoints v = testing::readVtkPoints(dir + "/mpData_" + std::to_string(k) + ".vtk");
+      double tip[2] = {0, 0};
+      int loaded = 0;
+      for (int p = 0; p < v.n; ++p) {
+        const std::vector<double>& x = v.at("points", p);
+        const std::vector<double>& u = v.at("displacement", p);
+        const double X0 = x[0] - u[0], Y0 = x[1] - u[1];
+        if (std::abs(X0 - 9.875) < 1e-9 && (std::abs(Y0 - 9.375) < 1e-9 || std::abs(Y0 - 9.625) < 1e-9)) {
+          tip[0] += 0.5 * u[0], tip[1] += 0.5 * u[1];
+          ++loaded;
+        }
+      }
+      REQUIRE(loaded == 2);
+      CHECK(std::abs(tip[0] - 10 * hist.at(k - 1, "tip_u_over_l")) <= 1e-12);
+      CHECK(std::abs(tip[1] - 10 * hist.at(k - 1, "tip_v_over_l")) <= 1e-12);
+    }
+    const testing::CsvTable fin = testing::readCsvTable(dir + "/mp_final.csv");
+    const testing::VtkPoints last = testing::readVtkPoints(dir + "/mpData_" + std::to_string(lstps) + ".vtk");
+    REQUIRE(size_t(last.n) == fin.rows.size());
+    for (int p = 0; p < last.n; ++p) {
+      CHECK(std::abs(last.at("points", p)[0] - fin.at(p, "x")) <= 1e-12);
+      CHECK(std::abs(last.at("points", p)[1] - fin.at(p, "y")) <= 1e-12);
+    }
+    const std::string summary = testing::fileText(dir + "/summary.json");
+    CHECK(summary.find("\"last_converged_step\": " + std::to_string(lstps) + ",") != std::string::npos);
+    CHECK(summary.find("\"completed\": true") != std::string::npos);
+  }
+}
+
+namespace {
+// u' K u of a nodal field u(x, y) = (ux, uy) sampled at the grid nodes
+template <class F>
+double ghostEnergy(const Mesh& mesh, const SpMat& K, F u, Eigen::VectorXd* U = nullptr) {
+  Eigen::VectorXd v(mesh.nDoF());
+  for (int n = 0; n < mesh.nodes(); ++n) {
+    const Vector2d uv = u(mesh.coord(n, 0), mesh.coord(n, 1));
+    for (int k = 0; k < nD; ++k) v(dof(n, k)) = uv(k);
+  }
+  if (U) *U = v;
+  return v.dot(K * v);
+}
+}  // namespace
+
+// The ghost penalty K_gp = sum_F gamma E h int_F [[du/dn]] . [[dv/dn]] ds (ghostPenalty.h)
+// against hand values. gamma E = 0.01 * 1e6 = 1e4 throughout; h is the cell size normal to
+// the face (the header does not say which size for a rectangular cell; the code's choice).
+// Cells of 0.5 m (x) by 0.25 m (y).
+//  two cells side by side (grid 1 x 0.25 m, 2 x 1 cells), face x_F = 0.5, h = 0.5, length 0.25:
+//   u_x = a max(x - x_F, 0), a = 0.3: [[du_x/dn]] = a on the face:   1e4 0.5 0.09 0.25 = 112.5
+//   u_y = b max(x - x_F, 0), b = -0.7 (tangential displacement):   1e4 0.5 0.49 0.25 = 612.5
+//   both at once: the components do not couple, 725
+//   u_x = a max(x - x_F, 0) y / 0.25: the jump a y / 0.25 grows along the face,
+//     int_0^0.25 (a y / 0.25)^2 dy = a^2 0.25 / 3:                   1e4 0.5 0.09 0.25 / 3 = 37.5
+//  two cells one above the other (grid 0.5 x 0.5 m, 1 x 2 cells), face y_F = 0.25, h = 0.25,
+//  length 0.5: u_x = c max(y - y_F, 0), c = 0.4, and u_y = d max(y - y_F, 0), d = 0.2:
+//                                                   1e4 0.25 (0.16 + 0.04) 0.5 = 250
+//  a linear field has no jump: K u = 0
+//  a 3 x 1 grid with the right cell inactive: the face next to it is no face of two active
+//  cells: u_x = max(x - 1, 0) gives 0
+//  a 4 x 4 grid of 0.5 m x 0.25 m cells, all active: the 2 x 2 cells in the middle are no edge
+//  cells. The hat function N of the centre node (1, 0.5) lives on them: across the 8 faces
+//  around the hat's support the jump of dN/dn runs linearly from 0 to 1 / h_n, the integral is
+//  length / (3 h_n^2) and a face adds gamma E length / (3 h_n): 4 vertical faces (length
+//  0.25, h_n = 0.5) 1e4 / 6 each, 4 horizontal (0.5, 0.25) 1e4 2/3 each: 1e4 10/3 = 33333.33.
+//  The 4 faces inside the support (jump twice as large, 4 times the value) are left out.
+// Tolerance 1e-12 relative (2-point Gauss is exact for the quadratic integrands)
+TEST_SUITE("robustness") {
+  TEST_CASE("robustness: the ghost penalty's u' K u equals gamma E h int [[du/dn]]^2 ds by hand (faces / jumps / edge cells)") {
+    const double gamma = 0.01, E = 1e6, tol = 1e-12;
+    const double a = 0.3, b = -0.7, c = 0.4, d = 0.2;
+    const auto ramp = [](double s) { return std::max(s, 0.0); };
+    {
+      Mesh m = formCoord2D(2, 1, 1.0, 0.25);
+      m.eInA.assign(2, 1);
+      const SpMat K = ghostPenalty(m, gamma, E);
+      CHECK(ghostEnergy(m, K, [&](double x, double) { return Vector2d(a * ramp(x - 0.5), 0); }) ==
+            doctest::Approx(112.5).epsilon(tol));
+      CHECK(ghostEnergy(m, K, [&](double x, double) { return Vector2d(0, b * ramp(x - 0.5)); }) ==
+            doctest::Approx(612.5).epsilon(tol));
+      CHECK(ghostEnergy(m, K, [&](double x, double) { return Vector2d(a * ramp(x - 0.5), b * ramp(x - 0.5)); }) ==
+            doctest::Approx(725.0).epsilon(tol));
+      CHECK(ghostEnergy(m, K, [&](double x, double y) { return Vector2d(a * ramp(x - 0.5) * y / 0.25, 0); }) ==
+            doctest::Approx(37.5).epsilon(tol));
+      Eigen::VectorXd u;
+      ghostEnergy(m, K, [](double x, double y) { return Vector2d(0.2 * x + 0.1 * y, -0.3 * x + 0.4 * y); }, &u);
+      CHECK((K * u).norm() <= tol * Eigen::MatrixXd(K).norm() * u.norm());
+      CHECK((Eigen::MatrixXd(K) - Eigen::MatrixXd(K).transpose()).norm() == 0.0);
+    }
+    {
+      Mesh m = formCoord2D(1, 2, 0.5, 0.5);
+      m.eInA.assign(2, 1);
+      const SpMat K = ghostPenalty(m, gamma, E);
+      CHECK(ghostEnergy(m, K, [&](double, double y) { return Vector2d(c * ramp(y - 0.25), d * ramp(y - 0.25)); }) ==
+            doctest::Approx(250.0).epsilon(tol));
+    }
+    {
+      Mesh m = formCoord2D(3, 1, 1.5, 0.25);
+      m.eInA = {1, 1, 0};
+      const SpMat K = ghostPenalty(m, gamma, E);
+      CHECK(ghostEnergy(m, K, [&](double x, double) { return Vector2d(ramp(x - 1.0), 0); }) == 0.0);
+      CHECK(ghostEnergy(m, K, [&](double x, double) { return Vector2d(a * ramp(x - 0.5), 0); }) ==
+            doctest::Approx(112.5).epsilon(tol));
+    }
+    {
+      Mesh m = formCoord2D(4, 4, 2.0, 1.0);
+      m.eInA.assign(16, 1);
+      const SpMat K = ghostPenalty(m, gamma, E);
+      const auto hat = [](double x, double y) {
+        return std::max(1 - std::abs(x - 1.0) / 0.5, 0.0) * std::max(1 - std::abs(y - 0.5) / 0.25, 0.0);
+      };
+      CHECK(ghostEnergy(m, K, [&](double x, double y) { return Vector2d(hat(x, y), 0); }) ==
+            doctest::Approx(1e4 * 10.0 / 3.0).epsilon(tol));
+      CHECK(ghostEnergy(m, K, [&](double x, double y) { return Vector2d(hat(x, y), -2 * hat(x, y)); }) ==
+            doctest::Approx(5 * 1e4 * 10.0 / 3.0).epsilon(tol));
+    }
   }
 }
