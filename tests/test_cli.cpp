@@ -335,7 +335,7 @@ TEST_SUITE("cli") {
     CHECK(runBinary("--help extra") == 2);
   }
 
-  TEST_CASE("cli: a choice's name is read in any case; an unknown one lists the names and numbers") {
+  TEST_CASE("cli: a choice's name is read in any case, an unknown one lists the names and numbers") {
     for (const std::string name : {"gimp", "GIMP", "Gimp", "gImP"}) {
       CAPTURE(name);
       CHECK(get(parseArgs({"compaction", "mpType=" + name}).params, "mpType") == 2);
@@ -348,7 +348,7 @@ TEST_SUITE("cli") {
     CHECK(has(refusalOf({"compaction", "cmType=vonmises"}), "parameter 'cmType' = 'vonmises': allowed 1 elastic, 2 VM"));
   }
 
-  TEST_CASE("cli: any finite double is accepted, subnormals too; only overflow is not finite") {
+  TEST_CASE("cli: any finite double is accepted, subnormals too, only overflow is not finite") {
     // strtod sets ERANGE on a subnormal result as on overflow; only the latter is bad input
     CHECK(get(parseArgs({"compaction", "E=1e-320"}).params, "E") == std::strtod("1e-320", nullptr));
     CHECK(get(parseArgs({"compaction", "E=4.9e-324"}).params, "E") > 0);  // the least subnormal
