@@ -5,8 +5,11 @@
 //   ample <setup> --help
 //   ample <setup> [name=value ...] [--out DIR] [--vtk N] [--vtk-format ascii|binary]
 //                 [--accept-floor] [--quiet]
-// Every value is checked before any work: a number, whole where required,
-// inside the parameter's range; unknown names and options are refused.
+// Every value is checked before any work: a plain decimal number (no hex, inf,
+// nan or spaces), written as a whole number (digits, optional sign) where one is
+// required, or a choice's name in any case; inside the parameter's range. Unknown
+// names and options, a name or option given twice, an option's missing value and
+// words after --list, --help or <setup> --help are refused.
 // Inputs:  args (the words after the program name)
 // Outputs: CliRequest; throws InputError naming the parameter, the value
 //          given and what is allowed (the program then exits with status 2)

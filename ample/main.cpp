@@ -33,10 +33,10 @@ int main(int argc, char** argv) {
   } catch (const ExerciseNotDone& e) {  // the student copy (docs/exercises.md)
     std::cerr << "ample: needs exercise " << e.what() << "\n";
     return 3;
-  } catch (const InputError& e) {      // the setup's problem is inconsistent
-    std::cerr << "ample: " << e.what() << "\n";
+  } catch (const InputError& e) {      // the setup's problem is inconsistent, or --out
+    std::cerr << "ample: " << e.what() << "\n";   // cannot be made (before any file is written)
     return 2;
-  } catch (const std::exception& e) {  // e.g. the output folder cannot be written
+  } catch (const std::exception& e) {  // e.g. a result file cannot be written at the end
     std::cerr << "ample: " << e.what() << "\n";
     return 1;
   }

@@ -6,8 +6,10 @@
 #include "writeOutput.h"
 #include "ample/errors.h"
 #include "makeVtk.h"
+#include <cerrno>
 #include <cmath>
 #include <cstdio>
+#include <cstring>
 #include <filesystem>
 #include <sstream>
 
@@ -15,10 +17,25 @@ namespace ample {
 
 namespace fs = std::filesystem;
 
-void prepareOutput(const std::string& outDir) {
+// the output folder (--out) made and writable, else bad input (exit 2) before any file is written
+static void checkOutDir(const std::string& outDir) {
   std::error_code ec;
   fs::create_directories(outDir, ec);
-  if (!fs::is_directory(outDir)) throw RunError("cannot create output folder " + outDir);
+  if (!ec && !fs::is_directory(outDir, ec)) ec = std::make_error_code(std::errc::not_a_directory);
+  if (ec) throw InputError("--out " + outDir + ": cannot create the output folder (" + ec.message() + ")");
+  const std::string probe = (fs::path(outDir) / ".ample_write_test").string();
+  errno = 0;
+  std::FILE* f = std::fopen(probe.c_str(), "w");
+  if (!f)
+    throw InputError("--out " + outDir + ": cannot write in the output folder (" +
+                     std::strerror(errno) + ")");
+  std::fclose(f);
+  fs::remove(probe, ec);
+}
+
+void prepareOutput(const std::string& outDir) {
+  checkOutDir(outDir);
+  std::error_code ec;
   for (const auto& e : fs::directory_iterator(outDir)) {
     const std::string n = e.path().filename().string();
     const bool ours = n == "mesh.vtk" || n == "steps.csv" || n == "residuals.csv" ||

@@ -2,7 +2,8 @@
 // writeOutput — the run's tables and summary
 //--------------------------------------------------------------------------
 // prepareOutput creates the output folder and removes the files an earlier
-// run left there (so no stale step file looks like part of this run).
+// run left there (so no stale step file looks like part of this run); a folder
+// that cannot be made or written in is bad input (InputError naming --out).
 // writeOutput writes, each to a temporary name then renamed:
 //   steps.csv      lstp, load_factor, NRit, fErr, converged, seconds
 //   residuals.csv  lstp, NRit, fErr (every Newton-Raphson pass)

@@ -4,6 +4,7 @@
 #include "ample/errors.h"
 #include "setups/setups.h"
 #include <doctest/doctest.h>
+#include <cctype>
 #include <cmath>
 #include <cstdlib>
 #include <map>
@@ -19,7 +20,7 @@ using namespace ample;
 namespace {
 // the program's exit status; status 3 (the student copy reached an exercise not
 // done, main.cpp) is passed on as ExerciseNotDone, so the test is skipped as "needs it"
-int runBinary(const std::string& args) {
+int runBinary(const std::string& args, std::string* errText = nullptr) {
   const std::string err = std::string(AMPLE_TEST_TMP) + "/runBinary_" + std::to_string(::getpid()) + ".err";
   std::filesystem::create_directories(AMPLE_TEST_TMP);
   const std::string cmd = std::string(AMPLE_BINARY) + " " + args + " >/dev/null 2>" + err;
@@ -27,6 +28,11 @@ int runBinary(const std::string& args) {
   const int code = WIFEXITED(st) ? WEXITSTATUS(st) : -1;
   std::string line;
   std::getline(std::ifstream(err), line);
+  if (errText) {
+    std::ostringstream all;
+    all << std::ifstream(err).rdbuf();
+    *errText = all.str();
+  }
   std::filesystem::remove(err);
   const std::string prefix = "ample: needs exercise ";
   if (code == 3 && line.rfind(prefix, 0) == 0) throw ExerciseNotDone(line.substr(prefix.size()));
@@ -45,6 +51,22 @@ bool inside(const Param& p, double v) {
   return std::isfinite(v) && (p.loOpen ? v > p.lo : v >= p.lo) && (p.hiOpen ? v < p.hi : v <= p.hi) &&
          (!p.isInteger || v == std::floor(v));
 }
+// a choice's name as the command line reads it: in any case
+bool sameName(std::string a, std::string b) {
+  for (char& c : a) c = char(std::tolower(static_cast<unsigned char>(c)));
+  for (char& c : b) c = char(std::tolower(static_cast<unsigned char>(c)));
+  return a == b;
+}
+// the message of the InputError parseArgs throws on args; "" if it accepts them
+std::string refusalOf(const std::vector<std::string>& args) {
+  try {
+    parseArgs(args);
+  } catch (const InputError& e) {
+    return e.what();
+  }
+  return "";
+}
+bool has(const std::string& text, const std::string& part) { return text.find(part) != std::string::npos; }
 const Param* paramOf(const Params& P, const std::string& name) {
   for (const Param& p : P)
     if (p.name == name) return &p;
@@ -75,7 +97,7 @@ bool parsedValuesValid(const CliRequest& r, const std::vector<std::string>& args
     if (!p) { MESSAGE("unknown name accepted: " << kv.first); ok = false; continue; }
     double v = std::strtod(kv.second.c_str(), nullptr);
     for (size_t k = 0; k < p->names.size(); ++k)
-      if (kv.second == p->names[k]) v = p->lo + double(k);
+      if (sameName(kv.second, p->names[k])) v = p->lo + double(k);
     if (p->value != v) { MESSAGE(kv.first << " = " << kv.second << " kept as " << p->value); ok = false; }
   }
   if (r.options.vtkEvery != std::strtod(vtk.c_str(), nullptr)) ok = false;
@@ -102,7 +124,7 @@ bool refusalNamesOffender(const std::string& m, const std::vector<std::string>& 
     ++ranges;
     const double v = std::strtod(text.c_str(), nullptr);
     bool isName = false;
-    for (const std::string& n : p->names) isName = isName || n == text;
+    for (const std::string& n : p->names) isName = isName || sameName(n, text);
     if (m.find("allowed ") == std::string::npos || m.find(rangeOf(*p)) == std::string::npos) return false;
     if (!isName && inside(*p, v)) return false;  // a valid value refused
   }
@@ -155,8 +177,8 @@ TEST_SUITE("cli") {
   TEST_CASE("cli: --vtk-format ascii (default) or binary / anything else is refused naming both") {
     CHECK(parseArgs({"compaction"}).options.vtkFormat == VtkFormat::Ascii);
     CHECK(parseArgs({"compaction", "--vtk-format", "binary"}).options.vtkFormat == VtkFormat::Binary);
-    CHECK(parseArgs({"compaction", "--vtk-format", "binary", "--vtk-format", "ascii"}).options.vtkFormat ==
-          VtkFormat::Ascii);  // the last one given
+    CHECK(has(refusalOf({"compaction", "--vtk-format", "binary", "--vtk-format", "ascii"}),
+              "option '--vtk-format' is given twice"));  // given once
     for (const std::vector<std::string>& args : std::vector<std::vector<std::string>>{
              {"compaction", "--vtk-format"}, {"compaction", "--vtk-format", "BINARY"},
              {"compaction", "--vtk-format", "xml"}, {"compaction", "--vtk-format", ""}}) {
@@ -237,5 +259,137 @@ TEST_SUITE("cli") {
     CHECK(runs > 100);        // both outcomes are exercised
     CHECK(refused > 100);
     CHECK(ranges > 10);       // including refusals of a value out of its range
+  }
+}
+
+TEST_SUITE("cli") {
+  TEST_CASE("cli: a value that is not a plain decimal number is refused (hex, inf, nan, spaces)") {
+    // strtod alone would read 0x2710 as 10000, and accept inf, nan and a leading space
+    for (const std::string text : {"0x2710", "0X1p3", "inf", "-inf", "nan", "infinity", " 5", "5 ",
+                                    "1e", "1e+", ".", "+", "e5", "1,5", "1e4x"}) {
+      CAPTURE(text);
+      const std::string m = refusalOf({"compaction", "E=" + text});
+      CHECK(has(m, "parameter 'E'"));
+      CHECK(has(m, "'" + text + "' is not a plain decimal number"));
+    }
+    const std::map<std::string, double> plain = {{"2e4", 2e4}, {"+5", 5}, {".5", 0.5}, {"5.", 5},
+                                                 {"1E3", 1e3}, {"20000", 2e4}, {"2.5e-3", 2.5e-3}};
+    for (const auto& kv : plain) {
+      CAPTURE(kv.first);
+      CHECK(get(parseArgs({"compaction", "E=" + kv.first}).params, "E") == kv.second);
+    }
+  }
+
+  TEST_CASE("cli: an integer parameter must be written as a whole number (digits, optional sign)") {
+    const Params P = findSetup("compaction")->params();
+    for (const std::string arg : {"lstps=1e1", "lstps=10.0", "lstps=10.", "mpType=2.0", "nelsy=8e0"}) {
+      CAPTURE(arg);
+      const std::string name = arg.substr(0, arg.find('='));
+      const std::string m = refusalOf({"compaction", arg});
+      CHECK(has(m, "parameter '" + name + "'"));
+      CHECK(has(m, "is not a whole number"));
+      CHECK(has(m, rangeText(*paramOf(P, name))));  // e.g. "integer in [1, 1e+06]"
+    }
+    CHECK(get(parseArgs({"compaction", "lstps=10"}).params, "lstps") == 10);
+    CHECK(get(parseArgs({"compaction", "nelsy=+8"}).params, "nelsy") == 8);
+  }
+
+  TEST_CASE("cli: a parameter or an option given twice is refused, naming it") {
+    CHECK(has(refusalOf({"compaction", "E=1e4", "E=2e4"}), "parameter 'E' is given twice"));
+    CHECK(has(refusalOf({"compaction", "E=1e4", "nu=0.2", "E=1e4"}), "parameter 'E' is given twice"));
+    CHECK(has(refusalOf({"compaction", "--out", "a", "--out", "b"}), "option '--out' is given twice"));
+    CHECK(has(refusalOf({"compaction", "--vtk", "1", "--vtk", "2"}), "option '--vtk' is given twice"));
+    CHECK(has(refusalOf({"compaction", "--quiet", "--quiet"}), "option '--quiet' is given twice"));
+    CHECK(refusalOf({"compaction", "E=1e4", "nu=0.2", "--out", "a", "--vtk", "1"}).empty());
+  }
+
+  TEST_CASE("cli: an option's value that is missing or is another option is refused") {
+    CHECK(has(refusalOf({"compaction", "--out", "--quiet"}), "option '--out' needs a folder name"));
+    CHECK(has(refusalOf({"compaction", "--out"}), "option '--out' needs a folder name"));
+    CHECK(has(refusalOf({"compaction", "--out", ""}), "option '--out' needs a folder name"));
+    CHECK(has(refusalOf({"compaction", "--vtk", "--quiet"}), "option '--vtk' needs a whole number"));
+    CHECK(has(refusalOf({"compaction", "--vtk-format", "--out", "x"}), "option '--vtk-format' needs a value"));
+    CHECK(has(refusalOf({"compaction", "--vtk", "1e1"}), "option '--vtk' = '1e1'"));
+    // the program: exit 2, and no folder named after the option
+    const std::string dir = "--quiet";
+    std::filesystem::remove_all(dir);
+    std::string err;
+    CHECK(runBinary("compaction nelsy=4 lstps=1 --vtk 0 --out --quiet", &err) == 2);
+    CHECK(has(err, "option '--out' needs a folder name"));
+    CHECK(!std::filesystem::exists(dir));
+    std::filesystem::remove_all(dir);
+  }
+
+  TEST_CASE("cli: --list, --help and <setup> --help take no other arguments") {
+    CHECK(has(refusalOf({"--list", "extra"}), "'--list' takes no other arguments; remove 'extra'"));
+    CHECK(has(refusalOf({"--help", "extra"}), "'--help' takes no other arguments; remove 'extra'"));
+    CHECK(has(refusalOf({"-h", "compaction"}), "remove 'compaction'"));
+    CHECK(has(refusalOf({"compaction", "--help", "extra"}), "remove 'extra'"));
+    CHECK(has(refusalOf({"compaction", "--out", "x", "--help"}), "remove '--out'"));
+    CHECK(parseArgs({"--list"}).mode == CliMode::List);
+    CHECK(parseArgs({"--help"}).mode == CliMode::Help);
+    CHECK(parseArgs({"compaction", "-h"}).mode == CliMode::SetupHelp);
+    std::string err;
+    CHECK(runBinary("--list extra", &err) == 2);
+    CHECK(has(err, "remove 'extra'"));
+    CHECK(runBinary("--help extra") == 2);
+  }
+
+  TEST_CASE("cli: a choice's name is read in any case, an unknown one lists the names and numbers") {
+    for (const std::string name : {"gimp", "GIMP", "Gimp", "gImP"}) {
+      CAPTURE(name);
+      CHECK(get(parseArgs({"compaction", "mpType=" + name}).params, "mpType") == 2);
+    }
+    CHECK(get(parseArgs({"compaction", "domainUpdate=CORNER"}).params, "domainUpdate") == 4);
+    CHECK(get(parseArgs({"compaction", "solver=ldlt"}).params, "solver") == 1);
+    CHECK(get(parseArgs({"compaction", "formulation=pc"}).params, "formulation") == 2);
+    CHECK(has(refusalOf({"compaction", "mpType=foo"}),
+              "parameter 'mpType' = 'foo': allowed 1 MPM, 2 GIMP, 3 CPDI1, 4 CPDI2"));
+    CHECK(has(refusalOf({"compaction", "cmType=vonmises"}), "parameter 'cmType' = 'vonmises': allowed 1 elastic, 2 VM"));
+  }
+
+  TEST_CASE("cli: any finite double is accepted, subnormals too, only overflow is not finite") {
+    // strtod sets ERANGE on a subnormal result as on overflow; only the latter is bad input
+    CHECK(get(parseArgs({"compaction", "E=1e-320"}).params, "E") == std::strtod("1e-320", nullptr));
+    CHECK(get(parseArgs({"compaction", "E=4.9e-324"}).params, "E") > 0);  // the least subnormal
+    CHECK(get(parseArgs({"compaction", "E=1.7e308"}).params, "E") == 1.7e308);
+    for (const std::string text : {"1e400", "-1e309", "2e308"}) {
+      CAPTURE(text);
+      const std::string m = refusalOf({"compaction", "E=" + text});
+      CHECK(has(m, "parameter 'E'"));
+      CHECK(has(m, "overflows a double"));
+    }
+    // 1e-400 rounds to 0, which is outside E's range (0, inf)
+    CHECK(has(refusalOf({"compaction", "E=1e-400"}), "parameter 'E' = 1e-400 is out of range: allowed (0, inf)"));
+  }
+
+  TEST_CASE("cli: an --out folder that cannot be made or written in is bad input (exit 2, named)") {
+    const std::string tmp = std::string(AMPLE_TEST_TMP) + "/cli_outdir";
+    std::filesystem::remove_all(tmp);
+    std::filesystem::create_directories(tmp);
+    std::ofstream(tmp + "/afile") << "a file, not a folder\n";
+    const std::string run = "compaction nelsy=4 lstps=1 E=1e6 --vtk 0 --quiet --out ";
+    for (const std::string& out : {tmp + "/afile/sub", tmp + "/afile", std::string("/proc/x")}) {
+      CAPTURE(out);
+      std::string err;
+      CHECK(runBinary(run + out, &err) == 2);
+      CHECK(has(err, "--out " + out + ": cannot create the output folder ("));
+    }
+    CHECK(std::filesystem::is_regular_file(tmp + "/afile"));
+    std::string err;  // a folder where no file can be made, even by root
+    CHECK(runBinary(run + "/proc", &err) == 2);
+    CHECK(has(err, "--out /proc: cannot write in the output folder ("));
+    const std::string locked = tmp + "/locked";  // a folder without write permission
+    std::filesystem::create_directories(locked);
+    std::filesystem::permissions(locked, std::filesystem::perms::owner_read | std::filesystem::perms::owner_exec);
+    if (::access(locked.c_str(), W_OK) == 0) {
+      MESSAGE("running as root: a folder without write permission is still writable, not tested");
+    } else {
+      CHECK(runBinary(run + locked, &err) == 2);
+      CHECK(has(err, "--out " + locked + ": cannot write in the output folder (Permission denied)"));
+      CHECK(std::filesystem::is_empty(locked));
+    }
+    std::filesystem::permissions(locked, std::filesystem::perms::owner_all);
+    std::filesystem::remove_all(tmp);
   }
 }

@@ -51,8 +51,11 @@ if [ "$where" = detMPs ]; then
   where="detMPs.cpp:$((line + 1))"
 fi
 
-batch=()
+batch=() defaults=()
 [ ${#cmds[@]} -gt 0 ] && batch=(-batch)
+own=" ${args[*]:-} "                           # the program refuses an option given twice
+[[ "$own" == *" --out "* ]] || defaults+=(--out "$root/build/debug/output/$setup")
+[[ "$own" == *" --vtk "* ]] || defaults+=(--vtk 0)
 exec gdb -q -nx "${batch[@]}" -x "$root/tools/gdb/eigen.py" -x "$root/tools/gdb/ample.gdb" \
   -ex "set breakpoint pending on" -ex "break $where" -ex run "${cmds[@]}" \
-  --args "$exe" "$setup" --out "$root/build/debug/output/$setup" --vtk 0 "${args[@]}"
+  --args "$exe" "$setup" "${defaults[@]}" "${args[@]}"
