@@ -78,7 +78,8 @@ static void keepIndependentLoneNodes(const MaterialPoint& mp, const std::vector<
   }
 }
 
-std::vector<int> detFDoFs(const Mesh& mesh, const std::vector<MaterialPoint>& mpData) {
+std::vector<int> detFDoFs(const Mesh& mesh, const std::vector<MaterialPoint>& mpData,
+                          const StiffnessSources& others) {
   std::vector<int> links(mesh.nodes(), 0);  // points linked to each node
   std::vector<char> isFree(mesh.nDoF(), 0); // 1: the dof is solved for
   // BEGIN EXERCISE detFDoFs
@@ -90,6 +91,10 @@ std::vector<int> detFDoFs(const Mesh& mesh, const std::vector<MaterialPoint>& mp
   for (const BC& c : mesh.bc) isFree[c.dof] = 0;
   // END EXERCISE
 
+  for (const SpMat* K : others)             // a node stiffened otherwise is not lone
+    if (K && K->cols() == mesh.nDoF())
+      for (int d = 0; d < K->cols(); ++d)
+        if (K->col(d).nonZeros() > 0) links[d / nD] += 2;
   for (const MaterialPoint& mp : mpData)    // GIMP/MPM: a point's redundant lone nodes
     if (!isCPDI(mp)) keepIndependentLoneNodes(mp, links, isFree);
 

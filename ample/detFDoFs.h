@@ -32,16 +32,25 @@
 //   point's nodes) is further than 1e-10 |a_v| from the span of those kept
 //   (exactly dependent vectors come out at ~1e-16). The decision reads per-point
 //   data only (link counts, S_v, dS_v), never an assembled sum.
+// Both rules drop a dof only where the point is the node's only stiffness: a node
+//   that the ghost penalty or an implicit boundary reaches (others) is not lone.
 // Inputs:  mesh (etpl, eInA, bc, nodes, coord, h) · [mpData (nIN, nn, Svp, corners)]
+//          · [others (the ghost penalty's and the implicit boundaries' K)]
 // Outputs: fd (ascending list of free degrees of freedom)
 // Tests:   tests/test_detFDoFs.cpp
 //--------------------------------------------------------------------------
 #pragma once
 #include "mpData.h"
+#include "stiffnessPattern.h"
 
 namespace ample {
 
-std::vector<int> detFDoFs(const Mesh& mesh, const std::vector<MaterialPoint>& mpData);  // linked nodes
+// stiffness added to Kt besides the points' (ghost penalty, implicit boundaries): a node
+// with an entry in a column of one of them is never lone (null pointers, empty: none)
+using StiffnessSources = std::vector<const SpMat*>;
+
+std::vector<int> detFDoFs(const Mesh& mesh, const std::vector<MaterialPoint>& mpData,
+                          const StiffnessSources& others = {});  // linked nodes
 std::vector<int> activeCellDoFs(const Mesh& mesh);  // seed 002's rule: nodes of active cells
 
 }  // namespace ample
