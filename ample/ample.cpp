@@ -107,12 +107,12 @@ void solve(Analysis& an, RunLog& log, const RunOptions& opt) {
     Eigen::VectorXd fext = timed(T.detExtForce, detExtForce, nDoF, an.g, mpData) * inc.lf1;
     if (an.bodyForce) fext += timed(T.detExtForce, detBodyForce, nDoF, an.bodyForce, inc.lf1, mpData);
     const std::vector<BC> bc = scaled(mesh.bc, inc.bcScale(an.lstps));  // increments of this step
-    const std::vector<int> fd = timed(T.detFDoFs, detFDoFs, mesh, mpData);
+    const SpMat Kgp = ghostPenaltyOf(an);                            // remedy (off: empty)
+    const ImplicitBoundaries ib = implicitBoundariesOf(an, inc);     // seed 003 (none: empty)
+    const std::vector<int> fd = timed(T.detFDoFs, detFDoFs, mesh, mpData, StiffnessSources{&Kgp, &ib.K});
     Eigen::VectorXd uvw = Eigen::VectorXd::Zero(nDoF), frct = uvw, oobf = fext, fib = uvw;
     DetMPsOut mps;                                                   // fint, Kt (and bEn) of the step
     mps.Kt = timed(T.detMPs, stiffnessPattern, nDoF, mpData);        // Kt's sparsity, once
-    const SpMat Kgp = ghostPenaltyOf(an);                            // remedy (off: empty)
-    const ImplicitBoundaries ib = implicitBoundariesOf(an, inc);     // seed 003 (none: empty)
     double fErr = 1.0;
     int NRit = 0;
     try {

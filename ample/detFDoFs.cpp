@@ -7,6 +7,8 @@
 #include "MPMbasis.h"
 #include "domainCorners.h"
 #include "exercise.h"
+#include <algorithm>
+#include <array>
 #include <cmath>
 
 namespace ample {
@@ -40,7 +42,44 @@ static int singleCorner(const CornerBasis& S, int v) {
   return only;
 }
 
-std::vector<int> detFDoFs(const Mesh& mesh, const std::vector<MaterialPoint>& mpData) {
+// a GIMP or MPM point's lone nodes (linked to no other point): per direction i, keep
+// free only the dofs whose basis vectors a_v = (S_v, dS_v/dx, dS_v/dy) (each row
+// scaled by its largest magnitude over the point's nodes) are independent, taken
+// in order of decreasing |S_v|; a vector within 1e-10 |a_v| of the span of the
+// kept ones is a combination of them and its dof is left out (at most 3 kept)
+static void keepIndependentLoneNodes(const MaterialPoint& mp, const std::vector<int>& links,
+                                     std::vector<char>& isFree) {
+  Eigen::Vector3d scale = Eigen::Vector3d::Zero();
+  for (int v = 0; v < mp.nn; ++v)
+    scale = scale.cwiseMax(Eigen::Vector3d(mp.Svp[v], mp.dSvp(0, v), mp.dSvp(1, v)).cwiseAbs());
+  std::array<int, MAXN> order;
+  int lone = 0;
+  for (int v = 0; v < mp.nn; ++v)
+    if (links[mp.nIN[v]] == 1) order[lone++] = v;
+  if (lone < 2 || (scale.array() == 0.0).any()) return;  // no redundancy, or no basis yet
+  std::stable_sort(order.begin(), order.begin() + lone,
+                   [&](int a, int b) { return std::abs(mp.Svp[a]) > std::abs(mp.Svp[b]); });
+  for (int i = 0; i < nD; ++i) {
+    Eigen::Matrix3d q;                      // orthonormal basis of the kept vectors
+    int kept = 0;
+    for (int k = 0; k < lone; ++k) {
+      const int v = order[k], d = dof(mp.nIN[v], i);
+      if (!isFree[d]) continue;
+      const Eigen::Vector3d a =
+          Eigen::Vector3d(mp.Svp[v], mp.dSvp(0, v), mp.dSvp(1, v)).cwiseQuotient(scale);
+      Eigen::Vector3d r = a;
+      for (int j = 0; j < kept; ++j) r -= q.col(j).dot(r) * q.col(j);
+      if (kept < 3 && r.norm() > 1e-10 * a.norm()) {
+        q.col(kept++) = r.normalized();
+      } else {
+        isFree[d] = 0;                      // a combination of the kept dofs' vectors
+      }
+    }
+  }
+}
+
+std::vector<int> detFDoFs(const Mesh& mesh, const std::vector<MaterialPoint>& mpData,
+                          const StiffnessSources& others) {
   std::vector<int> links(mesh.nodes(), 0);  // points linked to each node
   std::vector<char> isFree(mesh.nDoF(), 0); // 1: the dof is solved for
   // BEGIN EXERCISE detFDoFs
@@ -51,6 +90,13 @@ std::vector<int> detFDoFs(const Mesh& mesh, const std::vector<MaterialPoint>& mp
       for (int i = 0; i < nD; ++i) isFree[dof(n, i)] = 1;
   for (const BC& c : mesh.bc) isFree[c.dof] = 0;
   // END EXERCISE
+
+  for (const SpMat* K : others)             // a node stiffened otherwise is not lone
+    if (K && K->cols() == mesh.nDoF())
+      for (int d = 0; d < K->cols(); ++d)
+        if (K->col(d).nonZeros() > 0) links[d / nD] += 2;
+  for (const MaterialPoint& mp : mpData)    // GIMP/MPM: a point's redundant lone nodes
+    if (!isCPDI(mp)) keepIndependentLoneNodes(mp, links, isFree);
 
   for (const MaterialPoint& mp : mpData) {  // nodes only one CPDI corner reaches
     if (!isCPDI(mp)) continue;

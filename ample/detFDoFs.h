@@ -19,16 +19,38 @@
 //   others are left out of the system, which changes no point quantity: the
 //   residual of each is N_v(x_c) times that of the kept one, zero at
 //   convergence.
+// The same holds for a GIMP or MPM point's lone nodes (linked to it alone): they
+//   enter its position, dF and forces only through a_v = (S_v, dS_v/dx, dS_v/dy),
+//   three numbers per direction, so more than three lone dofs in a direction, or
+//   any whose a_v is a combination of the others', are redundant. The common case:
+//   a GIMP domain poking into an empty row of cells across a grid line links three
+//   nodes of that row, with S_v = Sx_v Sy and dS_v = (dSx_v Sy, Sx_v dSy): two
+//   combinations of three, a zero-energy mode per direction, whose LU pivot is
+//   round-off (zero or not by the summation order, i.e. the thread count). Per
+//   point and direction the lone dofs are taken by decreasing |S_v| and one is
+//   kept only if its a_v (each component scaled by its largest magnitude over the
+//   point's nodes) is further than 1e-10 |a_v| from the span of those kept
+//   (exactly dependent vectors come out at ~1e-16). The decision reads per-point
+//   data only (link counts, S_v, dS_v), never an assembled sum.
+// Both rules drop a dof only where the point is the node's only stiffness: a node
+//   that the ghost penalty or an implicit boundary reaches (others) is not lone.
 // Inputs:  mesh (etpl, eInA, bc, nodes, coord, h) · [mpData (nIN, nn, Svp, corners)]
+//          · [others (the ghost penalty's and the implicit boundaries' K)]
 // Outputs: fd (ascending list of free degrees of freedom)
 // Tests:   tests/test_detFDoFs.cpp
 //--------------------------------------------------------------------------
 #pragma once
 #include "mpData.h"
+#include "stiffnessPattern.h"
 
 namespace ample {
 
-std::vector<int> detFDoFs(const Mesh& mesh, const std::vector<MaterialPoint>& mpData);  // linked nodes
+// stiffness added to Kt besides the points' (ghost penalty, implicit boundaries): a node
+// with an entry in a column of one of them is never lone (null pointers, empty: none)
+using StiffnessSources = std::vector<const SpMat*>;
+
+std::vector<int> detFDoFs(const Mesh& mesh, const std::vector<MaterialPoint>& mpData,
+                          const StiffnessSources& others = {});  // linked nodes
 std::vector<int> activeCellDoFs(const Mesh& mesh);  // seed 002's rule: nodes of active cells
 
 }  // namespace ample

@@ -1,13 +1,18 @@
 // Tests of detFDoFs (seed 002 sec 4, sec 5.3): the free degrees of freedom are
 // those of the nodes of active cells, less the constrained ones, ascending.
 // With the points (the analysis): the nodes linked to a point, less the redundant
-// dofs of nodes that only one CPDI corner reaches (issue 10 item 3), and the
+// dofs of nodes that only one CPDI corner reaches (issue 10 item 3), the redundant
+// lone nodes of a GIMP point alone in a row of cells (Kt(fd,fd) of full rank, the
+// same on one and two threads), and the
 // elemMPinfo rule that a node with zero basis value and gradient is not linked.
 #include "ample/detFDoFs.h"
 #include "ample/detMPs.h"
 #include "ample/formCoord2D.h"
 #include "testProblems.h"
 #include <doctest/doctest.h>
+#ifdef _OPENMP
+#include <omp.h>
+#endif
 #include <Eigen/LU>
 #include <algorithm>
 #include <array>
@@ -154,5 +159,122 @@ TEST_SUITE("detFDoFs") {
       CHECK(rankOf(Kt, fd) == int(fd.size()));            // non-singular
       CHECK(rankOf(Kt, fdAll) == int(fdAll.size()) - 4);  // the active-cell rule: singular
     }
+  }
+}
+
+TEST_SUITE("detFDoFs") {
+  TEST_CASE("detFDoFs: a GIMP point alone in a row of cells, across a grid line, keeps two of its three lone nodes per direction") {
+    // a block of 2 x 2 GIMP points per cell (lp = 0.25) in cells [1,3) x [1,3), rollers
+    // on y = 1; the point at (2.25, 2.75) moved to (2.1, 2.9): its domain [1.85, 2.35] x
+    // [2.65, 3.15] pokes 0.15 into the empty row y in [3, 4] across x = 2, so the nodes
+    // (1,4) (2,4) (3,4) are linked to it alone. There S_v = Sx_v Sy and dS_v =
+    // (dSx_v Sy, Sx_v dSy): the point sees their u only through sum Sx_v u_v and
+    // sum dSx_v u_v, one zero-energy mode per direction (Kt singular in exact
+    // arithmetic: an LU finds a zero or a round-off pivot, by the summation order).
+    // Sx = 0.0225, 0.855, 0.1225 (seed 002 eqs 25-26, regions A, C, E): node (1,4) goes.
+    // The other top points' domains end exactly on y = 3 and x = 3: they link no
+    // node of row y = 4 or column x = 4 (elemForMP: touching is not overlapping).
+    Analysis an = testing::smallBlock(MpType::GIMP, CmType::Elastic, 2);
+    size_t moved = an.mpData.size();
+    for (size_t p = 0; p < an.mpData.size(); ++p)
+      if ((an.mpData[p].mpC - Vector2d(2.25, 2.75)).norm() < 1e-12) moved = p;
+    REQUIRE(moved < an.mpData.size());
+    REQUIRE(an.mpData[moved].lp.isApprox(Vector2d(0.25, 0.25)));
+    an.mpData[moved].mpC = Vector2d(2.1, 2.9);
+    for (int n = 0; n < an.mesh.nodes(); ++n)
+      if (std::abs(an.mesh.coord(n, 1) - 1.0) < 1e-12)
+        for (int i = 0; i < nD; ++i) an.mesh.bc.push_back({dof(n, i), 0.0});
+    elemMPinfo(an.mesh, an.mpData);
+    const int n14 = 4 * 5 + 1, n24 = 4 * 5 + 2, n34 = 4 * 5 + 3, n44 = 4 * 5 + 4, n43 = 3 * 5 + 4;
+    for (size_t p = 0; p < an.mpData.size(); ++p)
+      for (int n : {n14, n24, n34}) CHECK(linked(an.mpData[p], n) == (p == moved));
+    for (const MaterialPoint& mp : an.mpData) CHECK_FALSE((linked(mp, n44) || linked(mp, n43)));
+
+    const std::vector<int> fd = detFDoFs(an.mesh, an.mpData), fdAll = activeCellDoFs(an.mesh);
+    for (int i = 0; i < nD; ++i) {
+      CHECK_FALSE(has(fd, dof(n14, i)));     // the smallest S of the three
+      CHECK(has(fd, dof(n24, i)));
+      CHECK(has(fd, dof(n34, i)));
+    }
+    CHECK(fd.size() == fdAll.size() - 2);
+    // with stress (prestrain: E = 1e6, strains ~1e-3) the kept dofs' one rotation mode
+    // (4 gradients, 3 strains) has its geometric stiffness; unstressed it would be zero
+    std::vector<MaterialPoint> stressed = an.mpData;
+    testing::prestrain(stressed, 7);
+    const SpMat Kt = detMPs(Eigen::VectorXd::Zero(an.mesh.nDoF()), stressed, Formulation::UL).Kt;
+    CHECK(rankOf(Kt, fd) == int(fd.size()));            // no pivot below 1e-10 of the largest
+    CHECK(rankOf(Kt, fdAll) == int(fdAll.size()) - 2);  // all linked dofs: two null modes
+
+    // the choice rests on per-point data, not on the summation order: moving every
+    // point by a few ulps (as two threads' nodal sums move them) gives the same fd
+    for (unsigned seed = 1; seed <= 5; ++seed) {
+      std::vector<MaterialPoint> nudged = an.mpData;
+      std::mt19937 gen(seed);
+      std::uniform_real_distribution<double> r(-1.0, 1.0);
+      for (MaterialPoint& mp : nudged) mp.mpC += 4e-16 * Vector2d(r(gen), r(gen)).cwiseProduct(mp.mpC);
+      elemMPinfo(an.mesh, nudged);
+      CHECK(detFDoFs(an.mesh, nudged) == fd);
+    }
+  }
+}
+
+TEST_SUITE("detFDoFs") {
+  TEST_CASE("detFDoFs: the default collapse at the start of load step 34: a lone point's row, Kt(fd,fd) of full rank") {
+    // seed 002 sec 5.3, a = 2, mp = 3 (h = 1 m, lp = 1/6 m): after step 33 the GIMP
+    // point at (7.885, 6.938) pokes 0.10 h into the empty row y in [7, 8] across x = 8,
+    // so three nodes of y = 8 are linked to it alone: the linked dofs carry two
+    // zero-energy modes (pivots of round-off); detFDoFs leaves one dof per direction
+    // out and keeps a system whose pivots are all real (above 1e-10 of the largest)
+    const Setup* s = findSetup("collapse");
+    REQUIRE(s != nullptr);
+    Analysis an = s->setupGrid(s->params());
+    RunLog log;
+    solve(an, log, RunOptions{"", 0, true, 33});
+    REQUIRE(log.lastConverged == 33);
+    elemMPinfo(an.mesh, an.mpData);                    // step 34 as the analysis starts it
+    const std::vector<int> fd = detFDoFs(an.mesh, an.mpData), fdAll = activeCellDoFs(an.mesh);
+    CHECK(fd.size() == fdAll.size() - 2);
+    const SpMat Kt = detMPs(Eigen::VectorXd::Zero(an.mesh.nDoF()), an.mpData, an.formulation).Kt;
+    CHECK(rankOf(Kt, fd) == int(fd.size()));
+    CHECK(rankOf(Kt, fdAll) == int(fdAll.size()) - 2);
+  }
+
+  TEST_CASE("detFDoFs: the collapse a = 4, mp = 4 on one and two threads: the same passes, positions and residual floors") {
+    // 4,096 points: two threads' shares (pointShares). In load step 35 a point alone in
+    // a row of cells links three lone nodes; were their redundant dofs solved for, the
+    // LU would pivot on round-off and the two runs' last residuals of that step differ
+    // 14-fold (3.0e-14 and 4.2e-13); with them left out every step's last residual is
+    // at its round-off floor on both, within a factor 3, and the positions agree to 1e-10 m
+#ifndef _OPENMP
+    MESSAGE("built without AMPLE_OPENMP: one thread only, nothing to compare");
+#else
+    const int before = omp_get_max_threads();
+    RunLog log[2];
+    Analysis an[2];
+    for (int run = 0; run < 2; ++run) {
+      omp_set_num_threads(run + 1);
+      an[run] = testing::runSetup("collapse", {{"a", 4}, {"mp", 4}}, log[run]);
+    }
+    omp_set_num_threads(before);
+    REQUIRE(an[0].mpData.size() == 4096);
+    CHECK(log[0].converged);
+    CHECK(log[1].converged);
+    REQUIRE(log[0].residuals.size() == log[1].residuals.size());
+    std::map<int, std::array<double, 2>> last;       // per load step, its last residual
+    for (size_t k = 0; k < log[0].residuals.size(); ++k) {
+      const auto &r0 = log[0].residuals[k], &r1 = log[1].residuals[k];
+      CHECK(r0.lstp == r1.lstp);
+      CHECK(r0.NRit == r1.NRit);
+      last[r0.lstp] = {r0.fErr, r1.fErr};
+    }
+    for (const auto& [lstp, f] : last) {
+      CAPTURE(lstp);
+      CHECK(std::max(f[0], f[1]) <= 3 * std::min(f[0], f[1]));
+    }
+    double dx = 0;
+    for (size_t p = 0; p < an[0].mpData.size(); ++p)
+      dx = std::max(dx, (an[0].mpData[p].mpC - an[1].mpData[p].mpC).cwiseAbs().maxCoeff());
+    CHECK(dx <= 1e-10);
+#endif
   }
 }
