@@ -109,7 +109,8 @@ void solve(Analysis& an, RunLog& log, const RunOptions& opt) {
     const std::vector<BC> bc = scaled(mesh.bc, inc.bcScale(an.lstps));  // increments of this step
     const SpMat Kgp = ghostPenaltyOf(an);                            // remedy (off: empty)
     const ImplicitBoundaries ib = implicitBoundariesOf(an, inc);     // seed 003 (none: empty)
-    const std::vector<int> fd = timed(T.detFDoFs, detFDoFs, mesh, mpData, StiffnessSources{&Kgp, &ib.K});
+    const std::vector<int> fd = timed(T.detFDoFs, detFDoFs, mesh, mpData, StiffnessSources{&Kgp, &ib.K},
+                                          an.lone);
     Eigen::VectorXd uvw = Eigen::VectorXd::Zero(nDoF), frct = uvw, oobf = fext, fib = uvw;
     DetMPsOut mps;                                                   // fint, Kt (and bEn) of the step
     mps.Kt = timed(T.detMPs, stiffnessPattern, nDoF, mpData);        // Kt's sparsity, once

@@ -79,7 +79,7 @@ static void keepIndependentLoneNodes(const MaterialPoint& mp, const std::vector<
 }
 
 std::vector<int> detFDoFs(const Mesh& mesh, const std::vector<MaterialPoint>& mpData,
-                          const StiffnessSources& others) {
+                          const StiffnessSources& others, bool lone) {
   std::vector<int> links(mesh.nodes(), 0);  // points linked to each node
   std::vector<char> isFree(mesh.nDoF(), 0); // 1: the dof is solved for
   // BEGIN EXERCISE detFDoFs
@@ -90,6 +90,7 @@ std::vector<int> detFDoFs(const Mesh& mesh, const std::vector<MaterialPoint>& mp
       for (int i = 0; i < nD; ++i) isFree[dof(n, i)] = 1;
   for (const BC& c : mesh.bc) isFree[c.dof] = 0;
   // END EXERCISE
+  if (!lone) return listFree(isFree, mesh);  // the paper's free set
 
   for (const SpMat* K : others)             // a node stiffened otherwise is not lone
     if (K && K->cols() == mesh.nDoF())

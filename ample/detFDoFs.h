@@ -34,6 +34,8 @@
 //   data only (link counts, S_v, dS_v), never an assembled sum.
 // Both rules drop a dof only where the point is the node's only stiffness: a node
 //   that the ghost penalty or an implicit boundary reaches (others) is not lone.
+// lone = false (the parameter lone=0) applies neither rule: seed 002's free set, with
+//   which the 2x2 beam (a=2 mp=2) stops in load step 8 as in the paper (12 with the rules).
 // Inputs:  mesh (etpl, eInA, bc, nodes, coord, h) · [mpData (nIN, nn, Svp, corners)]
 //          · [others (the ghost penalty's and the implicit boundaries' K)]
 // Outputs: fd (ascending list of free degrees of freedom)
@@ -50,7 +52,8 @@ namespace ample {
 using StiffnessSources = std::vector<const SpMat*>;
 
 std::vector<int> detFDoFs(const Mesh& mesh, const std::vector<MaterialPoint>& mpData,
-                          const StiffnessSources& others = {});  // linked nodes
+                          const StiffnessSources& others = {},
+                          bool lone = true);  // linked nodes (lone = false: no rule applied)
 std::vector<int> activeCellDoFs(const Mesh& mesh);  // seed 002's rule: nodes of active cells
 
 }  // namespace ample

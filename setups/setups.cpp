@@ -105,6 +105,10 @@ Params commonParams(int lstps) {
       Param("ghost", 0).range(0, 1e3)
           .help("remedy: ghost-penalty factor gamma on the faces of the edge cells, on from the "
                 "first load step that fails without it (0 = off, the paper's)"),
+      Param("lone", 1).integer(0, 1)
+          .help("leave out of the free set the dofs of nodes that one point alone reaches and "
+                "that are redundant (a zero-energy mode whose pivot is round-off; 0 = the paper's "
+                "free set, every node linked to a point)"),
       Param("mpType", 2).choice(1, {"MPM", "GIMP", "CPDI1", "CPDI2"}).help("material point type"),
       Param("mp", 2).integer(1, 20).help("material points per cell in each direction"),
       Param("cmType", 1).choice(1, {"elastic", "VM"}).help("constitutive model"),
