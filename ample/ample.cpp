@@ -62,6 +62,7 @@ static void checkConverged(const Analysis& an, const RunLog& log, int lstp, int 
                            const Eigen::VectorXd& uvw, const Eigen::VectorXd& load, bool acceptFloor);
 static void recordStep(RunLog& log, const Increment& inc, int NRit, double fErr, const FreeSystem& Kff,
                        bool converged);
+static void checkNotInverted(const std::vector<MaterialPoint>& mpData, int lstp, double fErr);
 
 int ample(const Setup& setup, const Params& P, const RunOptions& opt) {
   RunLog log;
@@ -130,6 +131,7 @@ void solve(Analysis& an, RunLog& log, const RunOptions& opt) {
         NRit++;
       }
       checkConverged(an, log, lstp, NRit, fErr, uvw, fext + frct + fib, opt.acceptFloor);  // fErr > tol: throws
+      checkNotInverted(mpData, lstp, fErr);                          // det F <= 0 accepted: throws
     } catch (const RunError& e) {                                    // no convergence, NaN, singular
       recordStep(log, inc, NRit, fErr, Kff, false);
       loadSteps.retry(inc, e, an, opt.quiet);                        // remedies (off: rethrows e)
@@ -254,6 +256,19 @@ static void recordPass(RunLog& log, const std::vector<MaterialPoint>& mpData, in
   throw NewtonFailure("load step " + std::to_string(lstp) + ", Newton-Raphson pass " +
                       std::to_string(NRit) + ": the residual is not finite (NaN or Inf), " + where,
                       Failure::NotFinite);
+}
+
+// a converged state in which a point's det F <= 0 (its volume V = det F V0, eq 15, would
+// be zero or negative) is no state at all: only a loose tol or too large a step accepts one
+static void checkNotInverted(const std::vector<MaterialPoint>& mpData, int lstp, double fErr) {
+  for (size_t p = 0; p < mpData.size(); ++p) {
+    const double J = mpData[p].F.determinant();
+    if (J > 0) continue;
+    char msg[200];
+    std::snprintf(msg, sizeof msg, "load step %d: material point %zu is inverted (det F = %.3e <= 0) "
+                  "in the state accepted at fErr = %.3e", lstp, p, J, fErr);
+    throw NewtonFailure(msg, Failure::Inverted);
+  }
 }
 
 // eq 35: fErr = |oobf| / |fext + frct|, with DBL_EPSILON added to each entry of the

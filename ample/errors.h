@@ -27,7 +27,8 @@ enum class Failure {
   AtFloor,        // it stalled at its round-off floor: a larger tol (the message names one)
   NotFinite,      // a NaN or Inf in the residual
   Singular,       // Kt(fd,fd) could not be factorised or solved
-  LeftGrid        // a material point left the background grid
+  LeftGrid,       // a material point left the background grid
+  Inverted        // a converged state with det F <= 0 at a point (a loose tol, or too large a step)
 };
 struct RunError : std::runtime_error {
   Failure kind = Failure::Other;

@@ -69,6 +69,8 @@ std::string whatToTry(const RunError& e, const Analysis& an, int lstpsMax) {
       return an.ghost > 0 ? "; try more points per cell (mp), or check the boundary conditions"
                           : "; try ghost=0.01 (the ghost penalty pins the nearly free nodes of barely "
                             "filled cells), or check the boundary conditions";
+    case Failure::Inverted:  // a loose tol accepted it, else the step was too large
+      return an.tol > 1e-6 ? "; try a smaller tol (the paper's tol=1e-9)" : smallerSteps(an, lstpsMax);
     case Failure::LeftGrid:
       return an.widerGrid.empty() ? "; the setup's grid has no room for this motion" + smallerSteps(an, lstpsMax)
                                   : "; try a wider grid, " + an.widerGrid;
