@@ -328,6 +328,16 @@ static void checkConverged(const Analysis& an, const RunLog& log, int lstp, int 
                    lstp, fErr, an.tol, hi, floor);
       return;
     }
+  } else if (an.NRitMax < 10 && !(three && fErr < r1 && r1 < r0 && fErr < 1e-3) &&
+             !(stalled && hi <= maxFloor)) {
+    kind = Failure::StillFalling;                                  // too few passes to tell
+    std::snprintf(msg + n, sizeof msg - n, "; %d passes are too few for Newton-Raphson to converge "
+                  "or show a pattern: try the paper's NRitMax=10", an.NRitMax);
+  } else if (stalled && hi <= maxFloor) {
+    kind = Failure::AtFloor;                                       // a tol advised, never accepted
+    std::snprintf(msg + n, sizeof msg - n, "; the residual stalled at %.2e, below 1e-6 but above its "
+                  "estimated round-off floor %.1e: a tol above the stall would pass, e.g. tol=1e%d", hi,
+                  floor, int(std::ceil(std::log10(2 * hi))));
   } else if (stalled) {
     kind = Failure::Stalled;
     std::snprintf(msg + n, sizeof msg - n, "; the residual stalled at %.2e%s", hi,
@@ -335,7 +345,7 @@ static void checkConverged(const Analysis& an, const RunLog& log, int lstp, int 
   } else if (three && fErr < r1 && r1 < r0 && fErr < 1e-3 && an.NRitMax < 1000) {
     kind = Failure::StillFalling;
     std::snprintf(msg + n, sizeof msg - n, "; the residual was still falling (%.1e, %.1e, %.1e): "
-                  "more passes may converge, e.g. NRitMax=%d", r0, r1, fErr, std::min(2 * an.NRitMax, 1000));
+                  "more passes may converge, e.g. NRitMax=%d", r0, r1, fErr, std::min(std::max(20, 2 * an.NRitMax), 1000));
   }
   throw NewtonFailure(msg, kind);
 }

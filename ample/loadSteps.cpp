@@ -61,14 +61,15 @@ std::string whatToTry(const RunError& e, const Analysis& an, int lstpsMax) {
     case Failure::NotConverged:
     case Failure::Stalled:
     case Failure::NotFinite: return smallerSteps(an, lstpsMax);
-    case Failure::Singular:
-      if (!an.mesh.regular()) return "; try more points per cell (mp), or check the boundary conditions";
-      if (an.ghost > 0 && an.ghost < 1e3)
-        return "; try a larger ghost penalty, ghost=" + std::to_string(std::min(1e3, 10 * an.ghost)) +
-               ", or more points per cell (mp)";
-      return an.ghost > 0 ? "; try more points per cell (mp), or check the boundary conditions"
-                          : "; try ghost=0.01 (the ghost penalty pins the nearly free nodes of barely "
-                            "filled cells), or check the boundary conditions";
+    case Failure::Singular: {  // a nearly empty cell, or a load step so large that cells empty
+      const std::string halves = an.substeps >= 30 ? std::string("more points per cell (mp)")
+          : "substeps=" + std::to_string(an.substeps ? std::min(30, 2 * an.substeps) : 4) +
+            " (a failed load step is retried in halves)";
+      if (an.mesh.regular() && an.ghost == 0)
+        return "; try ghost=0.01 (the ghost penalty pins the nearly free nodes of barely filled cells) or " +
+               halves + "; with neither, check the boundary conditions";
+      return "; try " + halves + ", or check the boundary conditions";
+    }
     case Failure::Inverted:  // a loose tol accepted it, else the step was too large
       return an.tol > 1e-6 ? "; try a smaller tol (the paper's tol=1e-9)" : smallerSteps(an, lstpsMax);
     case Failure::LeftGrid:

@@ -109,7 +109,7 @@ Analysis setupGrid(const Params& P) {
   for (MaterialPoint& mp : an.mpData) mp.fp = b * mp.vp0 * dir;      // body force as fp (eq 27)
 
   const double E = get(P, "E"), nu = get(P, "nu");
-  an.afterStep = [R, O = g.O, b, E, nu, lstps = an.lstps](Analysis& a, int lstp) {
+  an.afterStep = [R, O = g.O, b, E, nu, lstps = an.lstps, tol = an.tol](Analysis& a, int lstp) {
     const double lf = double(lstp) / lstps;
     Vector2d uTip = Vector2d::Zero(), F = Vector2d::Zero(), Rct = Vector2d::Zero();
     double V = 0, wTip = 0;
@@ -118,7 +118,11 @@ Analysis setupGrid(const Params& P) {
       if (mp.u.norm() > uMax)  // a point alone in a cell on a mechanism (cell crossing)
         throw RunError("load step " + std::to_string(lstp) + ": a point at (" + std::to_string(mp.X0(0)) +
                        ", " + std::to_string(mp.X0(1)) + ") moved " + std::to_string(mp.u.norm()) +
-                       " m, twice the beam-theory tip deflection: a cell-crossing mechanism (try other lstps or mp)");
+                       " m, twice the beam-theory tip deflection: a cell-crossing mechanism; " +
+                       (tol > 1e-6 ? std::string("try the paper's tol=1e-8 (a loose tol accepted it)")
+                                   : a.ghost > 0 ? std::string("try mp=5 or other lstps")
+                                                 : std::string("try ghost=0.01 (it pins the nodes of a point "
+                                                               "alone in a cell) or mp=5")));
       F += lf * mp.fp;
       const Vector2d X = R.transpose() * (mp.X0 - O);
       if (X(0) >= strip) continue;
