@@ -71,6 +71,9 @@ int ample(const Setup& setup, const Params& P, const RunOptions& opt) {
   an.name = setup.name;
   checkAnalysis(an);
   prepareOutput(opt.outDir);
+  if (an.tol > 1e-3)                                                 // allowed, but say what it means
+    std::cerr << "ample: " << setup.name << ": warning: tol=" << an.tol << " accepts load steps whose "
+              << "out-of-balance force is up to " << an.tol << " of the load (eq 35); the paper's is 1e-9\n";
   auto stop = [&](const std::string& why) {                          // the run cannot go on
     if (!log.steps.empty() && !log.steps.back().converged) log.steps.back().seconds = log.stepClock.lap();
     restoreConverged(an.mpData);

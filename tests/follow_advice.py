@@ -31,8 +31,9 @@ NOT_A_SETTING = {"fErr", "tol_now", "x", "y"}  # key=value pairs of a message th
 
 def advised(message):
     """the settings a stop message advises, in order: the ones after 'try' or 'e.g.'"""
-    first = message.splitlines()[0] if message else ""
-    cut = max(first.find("; try "), first.find("e.g. "), first.find("would pass"))
+    lines = [l for l in message.splitlines() if l.startswith("ample: ") and ": warning: " not in l]
+    first = lines[0] if lines else ""
+    cut = max(first.find("try "), first.find("e.g. "), first.find("would pass"))
     if cut < 0:
         return []
     out = []
@@ -104,7 +105,8 @@ def main():
     n = len(jobs)
     print("stops: %d (%d with advice, %d without)" % (len(stops), n, len(silent)))
     for s in silent:
-        print("  no advice: %s" % s["stderr"].splitlines()[0][:160])
+        lines = [l for l in s["stderr"].splitlines() if l.startswith("ample: ") and ": warning: " not in l]
+        print("  no advice: %s" % (lines or s["stderr"].splitlines() or [""])[0][:160])
     if n:
         print("advice followed completes the run: %d of %d (%.0f %%): first setting %d, second %d; neither %d"
               % (count["first"] + count["second"], n, 100.0 * (count["first"] + count["second"]) / n,

@@ -35,11 +35,15 @@ Run runProgram(const std::string& args, const std::string& name) {
   if (r.code == 3) throw ExerciseNotDone("(the student copy): " + r.err);
   return r;
 }
-// the value after `key=` in a message, e.g. "ghost=0.01" for key "ghost"
+// the value after `key=` in a message's advice (after its "try " or "e.g. "), e.g. "0.01" for
+// key "ghost"; a warning line before the stop (a loose tol) is not advice
 std::string advised(const std::string& message, const std::string& key) {
+  const size_t t = std::min(message.find("try "), message.find("e.g. "));
+  if (t == std::string::npos) return "";
+  const std::string advice = message.substr(t);
   std::smatch m;
   const std::regex re("\\b" + key + "=([-+0-9.e]+)");
-  return std::regex_search(message, m, re) ? m[1].str() : "";
+  return std::regex_search(advice, m, re) ? m[1].str() : "";
 }
 // a token no JSON parser reads, or a NaN/Inf written by a C++ stream
 bool hasNonFinite(const std::string& text) {
@@ -131,6 +135,23 @@ TEST_SUITE("stops") {
     CHECK(r.err.find("singular") != std::string::npos);
     REQUIRE(advised(r.err, "ghost") == "0.01");
     CHECK(runProgram("ibcantilever h=0.01 mp=2 ghost=0.01", "singular_ghost").code == 0);
+  }
+
+  TEST_CASE("stops: too few Newton-Raphson passes name the paper's NRitMax, which completes the run") {
+    const Run r = runProgram("compaction NRitMax=2", "fewpasses");
+    REQUIRE(r.code == 1);
+    REQUIRE(advised(r.err, "NRitMax") == "10");
+    CHECK(runProgram("compaction NRitMax=10", "fewpasses_followed").code == 0);
+  }
+
+  TEST_CASE("stops: a singular stiffness from a large load step names substeps too, which completes it") {
+    // a 4.2 km column under its own weight: the first step empties cells (no rigid-body mode)
+    const Run r = runProgram("compaction l0=4165.31", "singular_large");
+    REQUIRE(r.code == 1);
+    CHECK(r.err.find("singular") != std::string::npos);
+    CHECK(advised(r.err, "ghost") == "0.01");
+    REQUIRE(advised(r.err, "substeps") == "4");
+    CHECK(runProgram("compaction l0=4165.31 substeps=4", "singular_large_halves").code == 0);
   }
 
   TEST_CASE("stops: a point that leaves the grid names the setup's wider grid, which completes the run") {
