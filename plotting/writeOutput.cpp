@@ -102,7 +102,11 @@ static std::string historyCsv(const Analysis& an) {
     if (r == 0)
       for (size_t c = 0; c < an.history[r].size(); ++c) s << (c ? "," : "") << an.history[r][c].first;
     s << "\n";
-    for (size_t c = 0; c < an.history[r].size(); ++c) s << (c ? "," : "") << an.history[r][c].second;
+    for (size_t c = 0; c < an.history[r].size(); ++c) {  // a value that is not finite: empty
+      const double v = an.history[r][c].second;
+      s << (c ? "," : "");
+      if (std::isfinite(v)) s << v;
+    }
   }
   s << "\n";
   return s.str();

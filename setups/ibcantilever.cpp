@@ -21,7 +21,8 @@
 // alone in a cell: the cell-crossing mechanism of standard MPM) stops the run
 // with a RunError instead of a silently wrong free-end mean.
 // Free-end displacement: the V-weighted mean over the points whose original
-// x' < strip = 2 mm (one paper cell), in beam axes.
+// x' < strip = 2 mm (one paper cell), in beam axes; on a coarser grid, one cell h
+// (h = 0.01 m, 2 x 2 points: none within 2 mm).
 // Beam theory (results, history): plane-strain Timoshenko cantilever under
 // q = b d, E' = E / (1 - nu^2), I = d^3 / 12, G = E / (2 (1 + nu)), kappa = 5/6,
 // at distance s = L - x' from the support:
@@ -125,7 +126,7 @@ Analysis setupGrid(const Params& P) {
                                                                "alone in a cell) or mp=5")));
       F += lf * mp.fp;
       const Vector2d X = R.transpose() * (mp.X0 - O);
-      if (X(0) >= strip) continue;
+      if (X(0) >= std::max(strip, a.mesh.h(0))) continue;  // one cell at least: a point falls in it
       V += mp.vp0, uTip += mp.vp0 * R.transpose() * mp.u, wTip += mp.vp0 * beamTheory(X(0), lf * b, E, nu);
     }
     for (int n = 0; n < a.mesh.nodes(); ++n) Rct += Vector2d(a.frct(dof(n, 0)), a.frct(dof(n, 1)));
