@@ -38,9 +38,18 @@ command -v gdb > /dev/null || { echo "gdb is not installed: apt-get install gdb"
 
 if [ "$build" = 1 ]; then
   mkdir -p "$root/build"
-  (cd "$root" && { [ -f build/debug/CMakeCache.txt ] || cmake --preset debug > /dev/null; } &&
-    cmake --build --preset debug --target ample) > "$root/build/debug_build.log" 2>&1 ||
-    { cat "$root/build/debug_build.log" >&2; echo "debug.sh: the Debug build failed" >&2; exit 2; }
+  log="$root/build/debug_build.log"
+  [ -x "$root/build/debug/ample" ] && when="up to date in seconds unless sources changed" ||
+    when="a first build takes 2-4 minutes on 2 cores"
+  echo "debug.sh: building the Debug program ($when; log: build/debug_build.log)" >&2
+  # the build's [ NN%] progress on one line of stderr, everything else to the log
+  if ! (cd "$root" && { [ -f build/debug/CMakeCache.txt ] || cmake --preset debug; } &&
+        cmake --build --preset debug --target ample) 2>&1 | tee "$log" |
+       { grep --line-buffered -o '^\[ *[0-9]*%\]' || true; } |
+       while read -r p; do printf '\r  %s' "$p" >&2; done; then
+    echo >&2; cat "$log" >&2; echo "debug.sh: the Debug build failed" >&2; exit 2
+  fi
+  echo >&2
 fi
 exe="$root/build/debug/ample"
 [ -x "$exe" ] || { echo "debug.sh: no $exe (run without --no-build)" >&2; exit 2; }
