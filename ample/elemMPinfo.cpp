@@ -4,13 +4,13 @@
 // Seed 002 sec 4. See elemMPinfo.h for inputs and outputs.
 //--------------------------------------------------------------------------
 #include "elemMPinfo.h"
-#include "MPMbasis.h"
-#include "cellSearch.h"
-#include "elemForMP.h"
+#include "ample/basis/MPMbasis.h"
+#include "ample/meshes/cellSearch.h"
+#include "ample/basis/elemForMP.h"
 #include "errors.h"
-#include "domainCorners.h"
-#include "nodesForMP.h"
-#include "pointShares.h"
+#include "ample/basis/domainCorners.h"
+#include "ample/basis/nodesForMP.h"
+#include "ample/solver/pointShares.h"
 #include <algorithm>
 
 namespace ample {

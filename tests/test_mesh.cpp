@@ -6,15 +6,15 @@
 // References are independent of the code tested: containment by sub-triangle
 // areas, the bilinear map written out, central differences, the regular grid's
 // fast path (SvpMPM, elemForMP) and the analytic Hencky stress of a uniform stretch.
-#include "ample/MPMbasis.h"
-#include "ample/cellBasis.h"
-#include "ample/cellSearch.h"
-#include "ample/cutCells.h"
-#include "ample/elemForMP.h"
+#include "ample/basis/MPMbasis.h"
+#include "ample/meshes/cellBasis.h"
+#include "ample/meshes/cellSearch.h"
+#include "ample/boundaries/cutCells.h"
+#include "ample/basis/elemForMP.h"
 #include "ample/errors.h"
-#include "ample/generalMesh.h"
-#include "ample/ghostPenalty.h"
-#include "ample/nodesForMP.h"
+#include "ample/meshes/generalMesh.h"
+#include "ample/remedies/ghostPenalty.h"
+#include "ample/basis/nodesForMP.h"
 #include "testProblems.h"
 #include <doctest/doctest.h>
 #include <cmath>
