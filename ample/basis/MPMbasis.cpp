@@ -13,22 +13,55 @@
 
 namespace ample {
 
-// a general mesh: N_node at x in the cell that holds x (0 when node is not one of its
-// nodes; the basis is continuous, so on a shared edge either cell gives the same value)
-static double meshBasis(const Mesh& mesh, int node, const Vector2d& x) {
-  const int e = cellOf(mesh, x);
-  const int a = localNode(mesh, e, node);
-  return a < 0 ? 0.0 : cellBasis(mesh, e, x).N[a];
-}
+// ---- the regular grid (seed 002) ----------------------------------------
 
+// the bi-linear basis of a grid node, the product of SvpMPM in x and y
 double gridBasis(const Mesh& mesh, int node, const Vector2d& x) {
-  if (!mesh.regular()) return meshBasis(mesh, node, x);
   return SvpMPM(x(0) - mesh.coord(node, 0), mesh.h(0)).S * SvpMPM(x(1) - mesh.coord(node, 1), mesh.h(1)).S;
 }
 
-// a general mesh: each corner's cell searched once (outside the mesh: cornerCell's cell,
-// its basis continued to the corner), the value of each of the point's nodes there
-static CornerBasis cornerMeshBasis(const Mesh& mesh, const MaterialPoint& mp, const Corners& x) {
+// the grid basis of each of the point's nodes at each domain corner
+static CornerBasis gridCornerBasis(const Mesh& mesh, const MaterialPoint& mp, const Corners& x) {
+  CornerBasis S = CornerBasis::Zero();
+  for (int v = 0; v < mp.nn; ++v)
+    for (int c = 0; c < 4; ++c) S(v, c) = gridBasis(mesh, mp.nIN[v], x.col(c));
+  return S;
+}
+
+// CPDI1 / CPDI2 from the basis of each node at the four corners S(v, c)
+static void cpdiBasis(MaterialPoint& mp, const Corners& x, const CornerBasis& S) {
+  for (int v = 0; v < mp.nn; ++v) {
+    const Eigen::Vector4d Sc = S.row(v).transpose();  // basis of node v at the four corners
+    const Basis2D b = (mp.mpType == MpType::CPDI1) ? SvpCPDI1(Sc, mp.st) : SvpCPDI2(Sc, x);
+    mp.Svp[v] = b.S;
+    mp.dSvp.col(v) = b.dS;
+  }
+}
+
+void MPMbasis(const Mesh& mesh, MaterialPoint& mp) {
+  if (isCPDI(mp)) {
+    const Corners x = domainCorners(mp);
+    return cpdiBasis(mp, x, gridCornerBasis(mesh, mp, x));
+  }
+  // BEGIN EXERCISE MPMbasis
+  for (int v = 0; v < mp.nn; ++v) {
+    Basis1D b[nD];
+    for (int i = 0; i < nD; ++i) {
+      const double d = mp.mpC(i) - mesh.coord(mp.nIN[v], i);
+      b[i] = (mp.mpType == MpType::MPM) ? SvpMPM(d, mesh.h(i)) : SvpGIMP(d, mesh.h(i), mp.lp(i));
+    }
+    mp.Svp[v] = b[0].S * b[1].S;
+    mp.dSvp(0, v) = b[0].dS * b[1].S;
+    mp.dSvp(1, v) = b[0].S * b[1].dS;
+  }
+  // END EXERCISE
+}
+
+// ---- a general mesh (docs/meshes.md) -------------------------------------
+
+// each corner's cell searched once (outside the mesh: cornerCell's cell, its basis
+// continued to the corner), the value of each of the point's nodes there
+static CornerBasis meshCornerBasis(const Mesh& mesh, const MaterialPoint& mp, const Corners& x) {
   CornerBasis S = CornerBasis::Zero();
   for (int c = 0; c < 4; ++c) {
     int e = findCell(mesh, x.col(c));
@@ -42,29 +75,13 @@ static CornerBasis cornerMeshBasis(const Mesh& mesh, const MaterialPoint& mp, co
   return S;
 }
 
-CornerBasis cornerBasis(const Mesh& mesh, const MaterialPoint& mp, const Corners& x) {
-  if (!mesh.regular()) return cornerMeshBasis(mesh, mp, x);
-  CornerBasis S = CornerBasis::Zero();
-  for (int v = 0; v < mp.nn; ++v)
-    for (int c = 0; c < 4; ++c) S(v, c) = gridBasis(mesh, mp.nIN[v], x.col(c));
-  return S;
-}
-
-// CPDI1 / CPDI2 from the grid (or cell) basis of each node at the four corners
-static void cpdiBasis(const Mesh& mesh, MaterialPoint& mp) {
-  const Corners x = domainCorners(mp);
-  const CornerBasis S = cornerBasis(mesh, mp, x);
-  for (int v = 0; v < mp.nn; ++v) {
-    const Eigen::Vector4d Sc = S.row(v).transpose();  // basis of node v at the four corners
-    const Basis2D b = (mp.mpType == MpType::CPDI1) ? SvpCPDI1(Sc, mp.st) : SvpCPDI2(Sc, x);
-    mp.Svp[v] = b.S;
-    mp.dSvp.col(v) = b.dS;
+// standard MPM from the basis of the point's one cell (cellBasis), CPDI from the
+// cell basis at the corners; GIMP needs the regular grid
+void meshMPMbasis(const Mesh& mesh, MaterialPoint& mp) {
+  if (isCPDI(mp)) {
+    const Corners x = domainCorners(mp);
+    return cpdiBasis(mp, x, meshCornerBasis(mesh, mp, x));
   }
-}
-
-// a general mesh: standard MPM from the basis of the point's one cell (cellBasis);
-// GIMP needs the regular grid
-static void meshMPMbasis(const Mesh& mesh, MaterialPoint& mp) {
   if (mp.mpType == MpType::GIMP)
     throw InputError(std::string("mpType=2 (GIMP) needs the regular grid; the background mesh is a ") +
                      meshName(mesh) + " (use mpType=1 MPM, 3 CPDI1 or 4 CPDI2)");
@@ -77,21 +94,10 @@ static void meshMPMbasis(const Mesh& mesh, MaterialPoint& mp) {
   }
 }
 
-void MPMbasis(const Mesh& mesh, MaterialPoint& mp) {
-  if (isCPDI(mp)) return cpdiBasis(mesh, mp);
-  if (!mesh.regular()) return meshMPMbasis(mesh, mp);
-  // BEGIN EXERCISE MPMbasis
-  for (int v = 0; v < mp.nn; ++v) {
-    Basis1D b[nD];
-    for (int i = 0; i < nD; ++i) {
-      const double d = mp.mpC(i) - mesh.coord(mp.nIN[v], i);
-      b[i] = (mp.mpType == MpType::MPM) ? SvpMPM(d, mesh.h(i)) : SvpGIMP(d, mesh.h(i), mp.lp(i));
-    }
-    mp.Svp[v] = b[0].S * b[1].S;
-    mp.dSvp(0, v) = b[0].dS * b[1].S;
-    mp.dSvp(1, v) = b[0].S * b[1].dS;
-  }
-  // END EXERCISE
+// ---- either (detFDoFs, updateDomain) --------------------------------------
+
+CornerBasis cornerBasis(const Mesh& mesh, const MaterialPoint& mp, const Corners& x) {
+  return mesh.regular() ? gridCornerBasis(mesh, mp, x) : meshCornerBasis(mesh, mp, x);
 }
 
 }  // namespace ample

@@ -13,8 +13,8 @@
 namespace ample {
 
 // the regular grid: the cells from the spacing
-static int gridCells(const Mesh& mesh, const Vector2d& mpC, const Vector2d& lp,
-                     std::array<int, MAXE>& eIN) {
+int elemForMP(const Mesh& mesh, const Vector2d& mpC, const Vector2d& lp,
+              std::array<int, MAXE>& eIN) {
   const int nels[nD] = {mesh.nelsx, mesh.nelsy};
   int first[nD], last[nD];
   for (int i = 0; i < nD; ++i) {
@@ -56,9 +56,8 @@ static int gridCells(const Mesh& mesh, const Vector2d& mpC, const Vector2d& lp,
 }
 
 // a general mesh: the cell that holds the point (cellSearch); a domain needs the grid
-int elemForMP(const Mesh& mesh, const Vector2d& mpC, const Vector2d& lp,
-              std::array<int, MAXE>& eIN) {
-  if (mesh.regular()) return gridCells(mesh, mpC, lp, eIN);
+int meshElemForMP(const Mesh& mesh, const Vector2d& mpC, const Vector2d& lp,
+                  std::array<int, MAXE>& eIN) {
   if (lp(0) > 0.0 || lp(1) > 0.0)
     throw InputError(std::string("mpType=2 (GIMP) needs the regular grid: its domains are squares "
                                  "of grid cells; the background mesh is a ") + meshName(mesh) +
