@@ -24,19 +24,19 @@
 // See ample.h for inputs and outputs.
 //--------------------------------------------------------------------------
 #include "ample.h"
-#include "cellSearch.h"
+#include "ample/meshes/cellSearch.h"
 #include "detExtForce.h"
 #include "detFDoFs.h"
 #include "detMPs.h"
 #include "elemMPinfo.h"
 #include "errors.h"
-#include "ghostPenalty.h"
-#include "ibStiffness.h"
+#include "ample/remedies/ghostPenalty.h"
+#include "ample/boundaries/ibStiffness.h"
 #include "linSolve.h"
-#include "loadSteps.h"
+#include "ample/remedies/loadSteps.h"
 #include "plotting/postPro.h"
 #include "plotting/writeOutput.h"
-#include "roundOffFloor.h"
+#include "ample/solver/roundOffFloor.h"
 #include "updateMPs.h"
 #include <algorithm>
 #include <cfloat>
@@ -323,7 +323,7 @@ static void checkConverged(const Analysis& an, const RunLog& log, int lstp, int 
                                  fErr, floor)
                  : std::snprintf(msg + n, sizeof msg - n, "; the residual %.2e is within 10 times its "
                                  "estimated round-off floor %.1e", hi, floor);
-    std::snprintf(msg + n, sizeof msg - n, " (ample/roundOffFloor.h): more passes will not help, a tol "
+    std::snprintf(msg + n, sizeof msg - n, " (ample/solver/roundOffFloor.h): more passes will not help, a tol "
                   "above the floor would pass, e.g. tol=1e%d", tolExp);
     if (acceptFloor && stalled) {
       std::fprintf(stderr, "ample: load step %d accepted at its round-off floor (--accept-floor): "

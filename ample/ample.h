@@ -29,7 +29,7 @@ struct RunOptions {
   int lastStep = 0;        // stop after this load step (0: all lstps; the tests use it)
   VtkFormat vtkFormat = VtkFormat::Ascii;  // the VTK files as ASCII or BINARY (--vtk-format)
   bool acceptFloor = false;  // accept a step whose residual stalled at its round-off floor
-                             // (--accept-floor; checkConverged, ample/roundOffFloor.h)
+                             // (--accept-floor; checkConverged, ample/solver/roundOffFloor.h)
 };
 
 int ample(const Setup& setup, const Params& P, const RunOptions& opt);

@@ -10,7 +10,7 @@
 // Data only: the bottom layer with mpData.h (docs/structure.md).
 //--------------------------------------------------------------------------
 #pragma once
-#include "boundary.h"
+#include "ample/boundaries/boundary.h"
 #include "mpData.h"
 #include <functional>
 #include <string>

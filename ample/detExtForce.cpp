@@ -4,7 +4,7 @@
 // Seed 002 eqs 27-28. See detExtForce.h for inputs and outputs.
 //--------------------------------------------------------------------------
 #include "detExtForce.h"
-#include "exercise.h"
+#include "ample/classroom/exercise.h"
 
 namespace ample {
 

@@ -4,9 +4,9 @@
 // See detFDoFs.h for the rules, inputs and outputs.
 //--------------------------------------------------------------------------
 #include "detFDoFs.h"
-#include "MPMbasis.h"
-#include "domainCorners.h"
-#include "exercise.h"
+#include "ample/basis/MPMbasis.h"
+#include "ample/basis/domainCorners.h"
+#include "ample/classroom/exercise.h"
 #include <algorithm>
 #include <array>
 #include <cmath>

@@ -43,7 +43,7 @@
 //--------------------------------------------------------------------------
 #pragma once
 #include "mpData.h"
-#include "stiffnessPattern.h"
+#include "ample/solver/stiffnessPattern.h"
 
 namespace ample {
 

@@ -7,12 +7,12 @@
 #include "detMPs.h"
 #include "constitutive/Hooke3d.h"
 #include "constitutive/VMconst.h"
-#include "exercise.h"
-#include "formPCstiff.h"
-#include "formULstiff.h"
-#include "stiffnessPattern.h"
-#include "pointShares.h"
-#include "tensorOps.h"
+#include "ample/classroom/exercise.h"
+#include "ample/stiffness/formPCstiff.h"
+#include "ample/stiffness/formULstiff.h"
+#include "ample/solver/stiffnessPattern.h"
+#include "ample/solver/pointShares.h"
+#include "ample/stiffness/tensorOps.h"
 
 namespace ample {
 

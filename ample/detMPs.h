@@ -37,7 +37,7 @@
 // Tests:   tests/test_detMPs.cpp, tests/test_smallStrain.cpp (SS)
 //--------------------------------------------------------------------------
 #pragma once
-#include "stiffnessPattern.h"
+#include "ample/solver/stiffnessPattern.h"
 #include "mpData.h"
 
 namespace ample {

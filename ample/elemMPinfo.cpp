@@ -4,37 +4,21 @@
 // Seed 002 sec 4. See elemMPinfo.h for inputs and outputs.
 //--------------------------------------------------------------------------
 #include "elemMPinfo.h"
-#include "MPMbasis.h"
-#include "cellSearch.h"
-#include "elemForMP.h"
+#include "ample/basis/MPMbasis.h"
+#include "ample/meshes/cellSearch.h"
+#include "ample/basis/elemForMP.h"
 #include "errors.h"
-#include "domainCorners.h"
-#include "nodesForMP.h"
-#include "pointShares.h"
+#include "ample/basis/domainCorners.h"
+#include "ample/basis/nodesForMP.h"
+#include "ample/solver/pointShares.h"
 #include <algorithm>
 
 namespace ample {
 
-// CPDI on a general mesh: the cells of the four corners (cornerCell: on an edge the
-// domain's side; outside the mesh the last cell on the way from the point)
-static int meshCellsOfCorners(const Mesh& mesh, const MaterialPoint& mp, std::array<int, MAXE>& eIN) {
-  cellOf(mesh, mp.mpC);  // throws if the point left the mesh
-  const Corners x = domainCorners(mp);
-  int ne = 0;
-  for (int c = 0; c < 4; ++c) {
-    const int e = cornerCell(mesh, x.col(c), mp.mpC);
-    if (std::find(eIN.begin(), eIN.begin() + ne, e) == eIN.begin() + ne) eIN[ne++] = e;
-  }
-  std::sort(eIN.begin(), eIN.begin() + ne);
-  return ne;
-}
-
 // CPDI: the cells that contain the four domain corners (seed 001 sec 2 (iii));
 // a corner on a cell edge is taken into the cell on the domain's side of it,
 // a corner past the grid edge into the cell at the edge (the point must be inside)
-// (a general mesh: cornerCell)
 static int cellsOfCorners(const Mesh& mesh, const MaterialPoint& mp, std::array<int, MAXE>& eIN) {
-  if (!mesh.regular()) return meshCellsOfCorners(mesh, mp, eIN);
   std::array<int, MAXE> e;
   elemForMP(mesh, mp.mpC, Vector2d::Zero(), e);  // throws if the point left the grid
   const Corners x = domainCorners(mp);
@@ -72,23 +56,59 @@ int dropNullNodes(MaterialPoint& mp) {
   return mp.nn = k;
 }
 
-// one point: its cells (elemForMP, or the corners' cells for CPDI), their nodes,
-// the basis functions and gradients at those nodes (MPMbasis), null nodes dropped
-static void pointBasis(const Mesh& mesh, MaterialPoint& mp, size_t p, bool keepCells) {
+static RunError atPoint(size_t p, const RunError& e) {  // the error of point p
+  return RunError("point " + std::to_string(p) + ": " + e.what(), e.kind);
+}
+
+// one point on the regular grid: its cells (elemForMP, or the corners' cells for
+// CPDI), their nodes, the basis functions and gradients at those nodes (MPMbasis),
+// null nodes dropped
+static void gridPointBasis(const Mesh& mesh, MaterialPoint& mp, size_t p, bool keepCells) {
   try {
     if (keepCells && mp.ne == 1) {}               // FE mode: the point's own cell, no search
     else if (isCPDI(mp)) mp.ne = cellsOfCorners(mesh, mp, mp.eIN);
     else mp.ne = elemForMP(mesh, mp.mpC, mp.lp, mp.eIN);
   } catch (const RunError& e) {
-    throw RunError("point " + std::to_string(p) + ": " + e.what(), e.kind);
+    throw atPoint(p, e);
   }
   mp.nn = nodesForMP(mesh, mp.eIN, mp.ne, mp.nIN);
   MPMbasis(mesh, mp);
   dropNullNodes(mp);
 }
 
+// CPDI on a general mesh: the cells of the four corners (cornerCell: on an edge the
+// domain's side; outside the mesh the last cell on the way from the point)
+static int meshCellsOfCorners(const Mesh& mesh, const MaterialPoint& mp, std::array<int, MAXE>& eIN) {
+  cellOf(mesh, mp.mpC);  // throws if the point left the mesh
+  const Corners x = domainCorners(mp);
+  int ne = 0;
+  for (int c = 0; c < 4; ++c) {
+    const int e = cornerCell(mesh, x.col(c), mp.mpC);
+    if (std::find(eIN.begin(), eIN.begin() + ne, e) == eIN.begin() + ne) eIN[ne++] = e;
+  }
+  std::sort(eIN.begin(), eIN.begin() + ne);
+  return ne;
+}
+
+// the same on a general mesh (docs/meshes.md): the cell that holds the point
+// (meshElemForMP, or the corners' cells for CPDI), meshMPMbasis
+static void meshPointBasis(const Mesh& mesh, MaterialPoint& mp, size_t p, bool keepCells) {
+  try {
+    if (keepCells && mp.ne == 1) {}               // FE mode: the point's own cell, no search
+    else if (isCPDI(mp)) mp.ne = meshCellsOfCorners(mesh, mp, mp.eIN);
+    else mp.ne = meshElemForMP(mesh, mp.mpC, mp.lp, mp.eIN);
+  } catch (const RunError& e) {
+    throw atPoint(p, e);
+  }
+  mp.nn = nodesForMP(mesh, mp.eIN, mp.ne, mp.nIN);
+  meshMPMbasis(mesh, mp);
+  dropNullNodes(mp);
+}
+
 void elemMPinfo(Mesh& mesh, std::vector<MaterialPoint>& mpData, bool keepCells) {
-  if (!mesh.regular()) buildCellSearch(mesh);  // a setup may have moved the mesh's nodes
+  const bool grid = mesh.regular();             // the one choice: the grid's path or a mesh's
+  if (!grid) buildCellSearch(mesh);             // a setup may have moved the mesh's nodes
+  const auto pointBasis = grid ? gridPointBasis : meshPointBasis;
   const int np = int(mpData.size()), nt = pointThreads(np);
   if (nt == 1)
     for (int p = 0; p < np; ++p) pointBasis(mesh, mpData[p], p, keepCells);

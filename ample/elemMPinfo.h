@@ -12,6 +12,9 @@
 // cell from an earlier step keeps it without a search, as an integration point
 // keeps its element however the element distorts (a non-convex cell fails the
 // search's edge test but its isoparametric map still holds at the point).
+// The regular grid and a general mesh each have their own path, chosen once
+// here: elemForMP and MPMbasis on the grid, meshElemForMP and meshMPMbasis on
+// a general mesh.
 // With OpenMP and at least 2048 points a thread (pointShares.h) the points are
 // shared out over the threads (each writes only its own points; the same
 // result as serially, bit for bit); the active cells are marked after.

@@ -9,7 +9,7 @@
 // ExerciseNotDone (exercise.h): a blanked region of the student copy was reached.
 //--------------------------------------------------------------------------
 #pragma once
-#include "exercise.h"  // ExerciseNotDone: a blanked exercise of the student copy
+#include "ample/classroom/exercise.h"  // ExerciseNotDone: a blanked exercise of the student copy
 #include <stdexcept>
 #include <string>
 

@@ -15,7 +15,7 @@
 // Tests:   tests/test_linSolve.cpp
 //--------------------------------------------------------------------------
 #pragma once
-#include "freeSystem.h"
+#include "ample/solver/freeSystem.h"
 #include "mpData.h"
 
 namespace ample {

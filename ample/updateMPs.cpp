@@ -4,8 +4,8 @@
 // Seed 002 eqs 15, 33, 34. See updateMPs.h for inputs and outputs.
 //--------------------------------------------------------------------------
 #include "updateMPs.h"
-#include "exercise.h"
-#include "updateDomain.h"
+#include "ample/classroom/exercise.h"
+#include "ample/basis/updateDomain.h"
 
 namespace ample {
 

@@ -4,7 +4,7 @@
 // Seed 002 eq 5. See Hooke3d.h for inputs and outputs.
 //--------------------------------------------------------------------------
 #include "Hooke3d.h"
-#include "ample/exercise.h"
+#include "ample/classroom/exercise.h"
 
 namespace ample {
 

@@ -4,7 +4,7 @@
 // Seed 002 eq 11. See VMconst.h for the algorithm, inputs and outputs.
 //--------------------------------------------------------------------------
 #include "VMconst.h"
-#include "ample/exercise.h"
+#include "ample/classroom/exercise.h"
 #include <cmath>
 
 namespace ample {

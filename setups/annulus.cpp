@@ -22,7 +22,7 @@
 //--------------------------------------------------------------------------
 #include "annulus.h"
 #include "ample/errors.h"
-#include "ample/generalMesh.h"
+#include "ample/meshes/generalMesh.h"
 #include "setupHelpers.h"
 #include <cmath>
 

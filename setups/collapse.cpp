@@ -11,7 +11,7 @@
 //          centres plus the initial half spacing h/(2 mp) (MPM, seed 000 table 6)
 // Tests:   tests/test_ample.cpp
 //--------------------------------------------------------------------------
-#include "ample/formCoord2D.h"
+#include "ample/meshes/formCoord2D.h"
 #include "setupHelpers.h"
 #include <cmath>
 

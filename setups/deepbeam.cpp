@@ -35,7 +35,7 @@
 #include "ample/detMPs.h"
 #include "ample/elemMPinfo.h"
 #include "ample/errors.h"
-#include "ample/formCoord2D.h"
+#include "ample/meshes/formCoord2D.h"
 #include "ample/linSolve.h"
 #include "setupHelpers.h"
 #include <cmath>

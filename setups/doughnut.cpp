@@ -35,7 +35,7 @@
 // Tests:   tests/test_femode.cpp; CTest setup.doughnut
 //--------------------------------------------------------------------------
 #include "ample/errors.h"
-#include "ample/generalMesh.h"
+#include "ample/meshes/generalMesh.h"
 #include "setupHelpers.h"
 #include <cmath>
 #include <memory>

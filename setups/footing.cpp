@@ -3,7 +3,7 @@
 //--------------------------------------------------------------------------
 // A 3 x 3 m elastic domain (E = 1000 MPa, nu = 0.3, plane strain), h = 0.2 m,
 // 2 x 2 standard MPM points per cell (sec 5.5), every support an implicit
-// boundary (ample/ibStiffness.h) with delta = 1e-6 h: the base Fixed, the two
+// boundary (ample/boundaries/ibStiffness.h) with delta = 1e-6 h: the base Fixed, the two
 // sides Roller, and the footing a Prescribed segment (rough: both directions)
 // of width B on the top surface, centred, pushed down `push` = 1 m over 20
 // load steps; it moves with the prescribed displacement, so from the first
@@ -19,7 +19,7 @@
 // Tests:   tests/test_ibStiffness.cpp
 //--------------------------------------------------------------------------
 #include "ample/errors.h"
-#include "ample/formCoord2D.h"
+#include "ample/meshes/formCoord2D.h"
 #include "setupHelpers.h"
 #include <cmath>
 

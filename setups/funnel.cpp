@@ -1,7 +1,7 @@
 //--------------------------------------------------------------------------
 // funnel — an elastic body forced through a curved funnel (seed 003 sec 5.6)
 //--------------------------------------------------------------------------
-// The funnel's walls are curved implicit rollers (ample/ibStiffness.h), one
+// The funnel's walls are curved implicit rollers (ample/boundaries/ibStiffness.h), one
 // straight segment per grid column (the paper: one per cell the curve crosses;
 // where the wall is steep a segment crosses two cells), and the body's right
 // edge is pushed to the left by a PrescribedNormal implicit boundary, 4 mm per
@@ -23,7 +23,7 @@
 //          results: the same at the last step
 // Tests:   tests/test_ibMoving.cpp
 //--------------------------------------------------------------------------
-#include "ample/formCoord2D.h"
+#include "ample/meshes/formCoord2D.h"
 #include "setupHelpers.h"
 #include <cmath>
 

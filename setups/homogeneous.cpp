@@ -4,7 +4,7 @@
 // See homogeneous.h for inputs and outputs.
 //--------------------------------------------------------------------------
 #include "homogeneous.h"
-#include "ample/tensorOps.h"
+#include "ample/stiffness/tensorOps.h"
 #include "constitutive/Hooke3d.h"
 #include "constitutive/VMconst.h"
 

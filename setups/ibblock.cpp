@@ -2,7 +2,7 @@
 // ibblock — compression of a contained block by implicit boundaries (seed 003 sec 5.1)
 //--------------------------------------------------------------------------
 // A 100 x 100 mm block (L = 0.1 m) in rollers on three sides (implicit
-// boundaries, ample/ibStiffness.h), its fourth side pushed 1 mm (du = 1e-3 m)
+// boundaries, ample/boundaries/ibStiffness.h), its fourth side pushed 1 mm (du = 1e-3 m)
 // along its inward normal in one load step (PrescribedNormal: zero shear). The
 // block is rotated by theta (degrees) about its centre, which sits on a node of
 // a grid aligned with x, y (h = 10 mm, a 2N x 2N grid with room for every
@@ -18,7 +18,7 @@
 //          sxx_mean (MPa), points
 // Tests:   tests/test_ibStiffness.cpp
 //--------------------------------------------------------------------------
-#include "ample/formCoord2D.h"
+#include "ample/meshes/formCoord2D.h"
 #include "setupHelpers.h"
 #include <cmath>
 

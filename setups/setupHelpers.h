@@ -25,7 +25,7 @@
 //          tests/test_boundary.cpp (fillPolygon, addBoundary, solidPolygon)
 //--------------------------------------------------------------------------
 #pragma once
-#include "ample/clipPolygon.h"
+#include "ample/meshes/clipPolygon.h"
 #include "setups.h"
 #include <functional>
 

@@ -8,7 +8,7 @@
 //--------------------------------------------------------------------------
 #include "setups.h"
 #include "ample/errors.h"
-#include "ample/solverChoice.h"
+#include "ample/solver/solverChoice.h"
 #include <cmath>
 #include <sstream>
 

@@ -2,11 +2,11 @@
 // (eq 22) and elemMPinfo: partition of unity, linear reproduction, gradients
 // against finite differences, continuity across the GIMP regions, GIMP = MPM
 // inside a cell. The points are built by hand on a grid from formCoord2D.
-#include "ample/MPMbasis.h"
-#include "ample/SvpGIMP.h"
-#include "ample/SvpMPM.h"
+#include "ample/basis/MPMbasis.h"
+#include "ample/basis/SvpGIMP.h"
+#include "ample/basis/SvpMPM.h"
 #include "ample/elemMPinfo.h"
-#include "ample/formCoord2D.h"
+#include "ample/meshes/formCoord2D.h"
 #include <doctest/doctest.h>
 #include <cmath>
 

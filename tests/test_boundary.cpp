@@ -1,14 +1,14 @@
 // Tests of the implicit boundaries of seed 003 (issue 11, first parts): the boundary
-// data (ample/boundary.h), the Dirichlet function of eq 16 and its band integrals
+// data (ample/boundaries/boundary.h), the Dirichlet function of eq 16 and its band integrals
 // (dirichletBand), the cut cells (cutCells), the polygon clip (clipPolygon) and the
 // point generation of sec 4 (fillPolygon, addBoundary, solidPolygon in setupHelpers).
 // Every value is by hand (worked out in the comments) or an invariant.
-#include "ample/boundary.h"
-#include "ample/clipPolygon.h"
-#include "ample/cutCells.h"
-#include "ample/dirichletBand.h"
+#include "ample/boundaries/boundary.h"
+#include "ample/meshes/clipPolygon.h"
+#include "ample/boundaries/cutCells.h"
+#include "ample/boundaries/dirichletBand.h"
 #include "ample/errors.h"
-#include "ample/formCoord2D.h"
+#include "ample/meshes/formCoord2D.h"
 #include "setups/setupHelpers.h"
 #include "setups/setups.h"
 #include <doctest/doctest.h>

@@ -3,11 +3,11 @@
 // values are computed independently here: the grid hat functions by hand and
 // the domain averages by 3 x 3 Gauss quadrature of the isoparametric map of the
 // domain (exact, since every integrand is at most quadratic in xi and eta).
-#include "ample/MPMbasis.h"
-#include "ample/SvpCPDI.h"
-#include "ample/domainCorners.h"
+#include "ample/basis/MPMbasis.h"
+#include "ample/basis/SvpCPDI.h"
+#include "ample/basis/domainCorners.h"
 #include "ample/elemMPinfo.h"
-#include "ample/formCoord2D.h"
+#include "ample/meshes/formCoord2D.h"
 #include <doctest/doctest.h>
 #include <algorithm>
 #include <cmath>

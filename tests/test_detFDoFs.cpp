@@ -7,7 +7,7 @@
 // elemMPinfo rule that a node with zero basis value and gradient is not linked.
 #include "ample/detFDoFs.h"
 #include "ample/detMPs.h"
-#include "ample/formCoord2D.h"
+#include "ample/meshes/formCoord2D.h"
 #include "testProblems.h"
 #include <doctest/doctest.h>
 #ifdef _OPENMP

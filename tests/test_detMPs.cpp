@@ -2,9 +2,9 @@
 // central finite differences of the assembled internal force, and a
 // homogeneous-deformation patch test.
 #include "ample/detMPs.h"
-#include "ample/stiffnessPattern.h"
+#include "ample/solver/stiffnessPattern.h"
 #include "constitutive/Hooke3d.h"
-#include "ample/tensorOps.h"
+#include "ample/stiffness/tensorOps.h"
 #include "testProblems.h"
 #include <doctest/doctest.h>
 #include <cmath>

@@ -3,9 +3,9 @@
 // closed-form Hencky stress and the exact nodal positions of a uniform stretch, a
 // hand-summed reaction, MPM with the same points (a single step must agree exactly),
 // equilibrium (the reactions of all supported nodes sum to zero without body force).
-#include "ample/cellBasis.h"
+#include "ample/meshes/cellBasis.h"
 #include "ample/errors.h"
-#include "ample/generalMesh.h"
+#include "ample/meshes/generalMesh.h"
 #include "ample/updateMPs.h"
 #include "testProblems.h"
 #include <doctest/doctest.h>

@@ -2,8 +2,8 @@
 // the matrix logarithm dLogdB against central differences of symLog (distinct,
 // repeated and nearly repeated eigenvalues) and analytic limits of the spatial
 // tangent a_ijkl at F = I. Tensors are 9x9 matrices, pair (i,j) -> 3i + j.
-#include "ample/formULstiff.h"
-#include "ample/tensorOps.h"
+#include "ample/stiffness/formULstiff.h"
+#include "ample/stiffness/tensorOps.h"
 #include "constitutive/Hooke3d.h"
 #include <doctest/doctest.h>
 #include <cmath>

@@ -4,7 +4,7 @@
 // strain problem, the prescribed values read back from the nodal field by a
 // bilinear interpolation written here, and equilibrium of the boundary forces.
 #include "ample/errors.h"
-#include "ample/ibStiffness.h"
+#include "ample/boundaries/ibStiffness.h"
 #include "testProblems.h"
 
 using namespace ample;

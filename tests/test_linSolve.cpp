@@ -6,7 +6,7 @@
 #include "ample/errors.h"
 #include "ample/detFDoFs.h"
 #include "ample/linSolve.h"
-#include "ample/solverChoice.h"
+#include "ample/solver/solverChoice.h"
 #include "testProblems.h"
 #include <doctest/doctest.h>
 #include <cmath>

@@ -6,15 +6,15 @@
 // References are independent of the code tested: containment by sub-triangle
 // areas, the bilinear map written out, central differences, the regular grid's
 // fast path (SvpMPM, elemForMP) and the analytic Hencky stress of a uniform stretch.
-#include "ample/MPMbasis.h"
-#include "ample/cellBasis.h"
-#include "ample/cellSearch.h"
-#include "ample/cutCells.h"
-#include "ample/elemForMP.h"
+#include "ample/basis/MPMbasis.h"
+#include "ample/meshes/cellBasis.h"
+#include "ample/meshes/cellSearch.h"
+#include "ample/boundaries/cutCells.h"
+#include "ample/basis/elemForMP.h"
 #include "ample/errors.h"
-#include "ample/generalMesh.h"
-#include "ample/ghostPenalty.h"
-#include "ample/nodesForMP.h"
+#include "ample/meshes/generalMesh.h"
+#include "ample/remedies/ghostPenalty.h"
+#include "ample/basis/nodesForMP.h"
 #include "testProblems.h"
 #include <doctest/doctest.h>
 #include <cmath>
@@ -296,13 +296,13 @@ TEST_SUITE("cellBasis") {
     for (int k = 0; k < 200; ++k) {
       pg.mpC = pq.mpC = Vector2d(1.5 * r(gen), r(gen));
       pg.ne = elemForMP(g, pg.mpC, pg.lp, pg.eIN);
-      pq.ne = elemForMP(q, pq.mpC, pq.lp, pq.eIN);
+      pq.ne = meshElemForMP(q, pq.mpC, pq.lp, pq.eIN);
       REQUIRE(pq.ne == 1);
       CHECK(pq.eIN[0] == pg.eIN[0]);
       pg.nn = nodesForMP(g, pg.eIN, pg.ne, pg.nIN);
       pq.nn = nodesForMP(q, pq.eIN, pq.ne, pq.nIN);
       MPMbasis(g, pg);
-      MPMbasis(q, pq);
+      meshMPMbasis(q, pq);
       for (int v = 0; v < 4; ++v) {
         dS = std::max(dS, std::abs(pg.Svp[v] - pq.Svp[v]));
         dG = std::max(dG, (pg.dSvp.col(v) - pq.dSvp.col(v)).cwiseAbs().maxCoeff());
@@ -412,7 +412,7 @@ TEST_SUITE("meshRefusals") {
     CHECK_THROWS_WITH_AS(solve(an, log), doctest::Contains("mpType=2 (GIMP)"), InputError);
     MaterialPoint mp = an.mpData[0];
     mp.ne = 1, mp.eIN[0] = findCell(an.mesh, mp.mpC), mp.nn = nodesForMP(an.mesh, mp.eIN, 1, mp.nIN);
-    CHECK_THROWS_AS(MPMbasis(an.mesh, mp), InputError);
+    CHECK_THROWS_AS(meshMPMbasis(an.mesh, mp), InputError);
   }
   TEST_CASE("meshRefusals: ghost penalty and implicit boundaries refuse a general mesh") {
     const Mesh q = asQuads(formCoord2D(2, 2, 1.0, 1.0));

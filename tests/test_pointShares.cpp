@@ -4,8 +4,8 @@
 // scattered GIMP and CPDI points on two threads equals the serial one bit for bit.
 #include "ample/elemMPinfo.h"
 #include "ample/errors.h"
-#include "ample/formCoord2D.h"
-#include "ample/pointShares.h"
+#include "ample/meshes/formCoord2D.h"
+#include "ample/solver/pointShares.h"
 #include "setups/setupHelpers.h"
 #include "setups/setups.h"
 #include <doctest/doctest.h>

@@ -5,7 +5,7 @@
 // stretch on the read mesh (patch test, FE mode: every node on x = F X), and the text
 // of the errors for files the reader refuses.
 #include "ample/errors.h"
-#include "ample/readGmsh.h"
+#include "ample/meshes/readGmsh.h"
 #include "testProblems.h"
 #include <doctest/doctest.h>
 #include <cmath>

@@ -2,9 +2,9 @@
 // pass and the first bad point; a failed load step can be rescued by sub-division.
 #include "ample/ample.h"
 #include "ample/errors.h"
-#include "ample/formCoord2D.h"
-#include "ample/ghostPenalty.h"
-#include "ample/loadSteps.h"
+#include "ample/meshes/formCoord2D.h"
+#include "ample/remedies/ghostPenalty.h"
+#include "ample/remedies/loadSteps.h"
 #include "testProblems.h"
 #include <doctest/doctest.h>
 #include <cstdlib>

@@ -1,10 +1,10 @@
-// Tests of roundOffFloor (ample/roundOffFloor.h) and of the message of a step that stalls at
+// Tests of roundOffFloor (ample/solver/roundOffFloor.h) and of the message of a step that stalls at
 // it (checkConverged in ample/ample.cpp): the formula against a hand computation, the
 // estimate against the measured stalls of a compaction column driven to tol = 1e-16, its
 // growth n^1.5 along the column, and the tol that the message suggests passing when re-run.
 #include "ample/ample.h"
 #include "ample/errors.h"
-#include "ample/roundOffFloor.h"
+#include "ample/solver/roundOffFloor.h"
 #include "setups/setups.h"
 #include <doctest/doctest.h>
 #include <cfloat>

@@ -6,7 +6,7 @@
 // The expected stresses are written here from Lame constants (not with Hooke3d).
 #include "ample/ample.h"
 #include "ample/detMPs.h"
-#include "ample/loadSteps.h"
+#include "ample/remedies/loadSteps.h"
 #include "ample/updateMPs.h"
 #include "testProblems.h"
 #include <doctest/doctest.h>

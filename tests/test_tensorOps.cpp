@@ -1,6 +1,6 @@
 // Tests of tensorOps: Voigt <-> tensor round trips, exponential and logarithm
 // of symmetric tensors (seed 002 eqs 9-10).
-#include "ample/tensorOps.h"
+#include "ample/stiffness/tensorOps.h"
 #include <doctest/doctest.h>
 #include <cmath>
 

@@ -3,11 +3,11 @@
 // the CPDI1 / CPDI2 domain updates (seed 001 sec 2 (vii)). A domain update is
 // "correct" when the domain area 4 lx ly equals det(F) V0 and, for the stretch
 // and hydrostatic modes, when the half lengths equal l0 times the stretches.
-#include "ample/domainCorners.h"
+#include "ample/basis/domainCorners.h"
 #include "ample/elemMPinfo.h"
-#include "ample/formCoord2D.h"
-#include "ample/updateDomain.h"
-#include "ample/tensorOps.h"
+#include "ample/meshes/formCoord2D.h"
+#include "ample/basis/updateDomain.h"
+#include "ample/stiffness/tensorOps.h"
 #include "ample/updateMPs.h"
 #include <doctest/doctest.h>
 #include <cmath>

@@ -2,13 +2,17 @@
 # check_layers.sh — the includes of the project run one way (docs/structure.md)
 #
 # Layers, bottom to top; a file may include files of its own layer or below:
-#   0 data          ample/mpData.h ample/errors.h ample/exercise.h ample/analysis.h ample/boundary.h
-#   0 constitutive  constitutive/*  (Eigen, the standard library and ample/exercise.h only)
-#   1 analysis      ample/* (basis, point loop, solver, updates, remedies)
-#   2 setups        setups/*
-#   3 output        plotting/*
-#   4 loop          ample/ample.h ample/ample.cpp
-#   5 program       ample/main.cpp ample/cli.h ample/cli.cpp
+#   0 data          ample/mpData.h ample/errors.h ample/analysis.h
+#                   ample/classroom/exercise.h ample/boundaries/boundary.h
+#   0 constitutive  constitutive/*  (Eigen, the standard library and ample/classroom/exercise.h only)
+#   1 pieces        ample/meshes/* ample/stiffness/* ample/solver/*
+#   2 parts         ample/basis/* ample/boundaries/* ample/remedies/*
+#   3 steps         ample/*.h ample/*.cpp (the functions the loop calls: elemMPinfo,
+#                   detExtForce, detFDoFs, linSolve, detMPs, updateMPs)
+#   4 setups        setups/*
+#   5 output        plotting/*
+#   6 loop          ample/ample.h ample/ample.cpp
+#   7 program       ample/program/*
 # and no two modules (a .h/.cpp pair) include each other, directly or round a
 # cycle (checked with tsort over the module graph). Prints every offending
 # include; exit 0 when there is none, 1 otherwise.
@@ -18,12 +22,15 @@ cd "$(dirname "$0")/.."
 
 layer() {  # layer of a project file, -1 for one outside the layered tree
   case "$1" in
-    ample/mpData.h|ample/errors.h|ample/exercise.h|ample/analysis.h|ample/boundary.h|constitutive/*) echo 0 ;;
-    ample/ample.h|ample/ample.cpp) echo 4 ;;
-    ample/main.cpp|ample/cli.h|ample/cli.cpp) echo 5 ;;
-    ample/*) echo 1 ;;
-    setups/*) echo 2 ;;
-    plotting/*) echo 3 ;;
+    ample/mpData.h|ample/errors.h|ample/analysis.h|ample/classroom/exercise.h|ample/boundaries/boundary.h|constitutive/*) echo 0 ;;
+    ample/meshes/*|ample/stiffness/*|ample/solver/*) echo 1 ;;
+    ample/basis/*|ample/boundaries/*|ample/remedies/*) echo 2 ;;
+    ample/ample.h|ample/ample.cpp) echo 6 ;;
+    ample/program/*) echo 7 ;;
+    ample/*/*) echo -1 ;;   # a folder of ample/ without a layer
+    ample/*) echo 3 ;;
+    setups/*) echo 4 ;;
+    plotting/*) echo 5 ;;
     *) echo -1 ;;
   esac
 }
@@ -31,7 +38,7 @@ layer() {  # layer of a project file, -1 for one outside the layered tree
 bad=0
 edges=$(mktemp)
 trap 'rm -f "$edges"' EXIT
-for f in ample/* constitutive/* setups/* plotting/*; do
+for f in ample/* ample/*/* constitutive/* setups/* plotting/*; do
   case "$f" in *.h|*.cpp) ;; *) continue ;; esac
   lf=$(layer "$f")
   while IFS= read -r inc; do
@@ -45,7 +52,7 @@ for f in ample/* constitutive/* setups/* plotting/*; do
       echo "$f (layer $lf) includes $t (layer $lt): an include up a layer"; bad=1
     fi
     case "$f" in constitutive/*)
-      case "$t" in constitutive/*|ample/exercise.h) ;; *) echo "$f includes $t: constitutive/ must stand alone"; bad=1 ;; esac
+      case "$t" in constitutive/*|ample/classroom/exercise.h) ;; *) echo "$f includes $t: constitutive/ must stand alone"; bad=1 ;; esac
     esac
     mf=${f%.*}; mt=${t%.*}
     [ "$mf" != "$mt" ] && echo "$mt $mf" >> "$edges"

@@ -28,7 +28,7 @@
 // Usage:   ample_bench [suite ...] [--out DIR] [--quick]
 // Outputs: DIR/<suite>.csv (default docs/results); plots: plotting/plot_results.py
 //--------------------------------------------------------------------------
-#include "ample/cli.h"
+#include "ample/program/cli.h"
 #include <algorithm>
 #include <cstdio>
 #include <filesystem>

@@ -32,11 +32,11 @@
 //          relative error |x - x*| / |x*| and residual |K x - b| / |b|
 // Build:   cmake --build --preset release --target solver_bench
 //--------------------------------------------------------------------------
-#include "ample/cli.h"
+#include "ample/program/cli.h"
 #include "ample/detFDoFs.h"
 #include "ample/detMPs.h"
 #include "ample/elemMPinfo.h"
-#include "ample/freeSystem.h"
+#include "ample/solver/freeSystem.h"
 #include <Eigen/OrderingMethods>
 #include <Eigen/SparseCholesky>
 #include <Eigen/SparseLU>

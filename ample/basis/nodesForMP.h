@@ -1,0 +1,17 @@
+//--------------------------------------------------------------------------
+// nodesForMP — unique list of the nodes of the cells linked to a point
+//--------------------------------------------------------------------------
+// Seed 002 table 1.
+// Inputs:  etpl (nels x 4, or x 3 for triangles) · eIN (ne cells)
+// Outputs: nIN (nodes, ascending) · number of nodes nn
+// Tests:   tests/test_grid.cpp
+//--------------------------------------------------------------------------
+#pragma once
+#include "ample/mpData.h"
+
+namespace ample {
+
+int nodesForMP(const Mesh& mesh, const std::array<int, MAXE>& eIN, int ne,
+               std::array<int, MAXN>& nIN);
+
+}  // namespace ample

@@ -1,0 +1,52 @@
+//--------------------------------------------------------------------------
+// solverChoice — the names of solver= and the ones this build has
+//--------------------------------------------------------------------------
+// See solverChoice.h for inputs and outputs.
+//--------------------------------------------------------------------------
+#include "solverChoice.h"
+#include "ample/errors.h"
+
+namespace ample {
+
+const std::vector<std::string>& solverNames() {
+  static const std::vector<std::string> names{"LU", "LDLT", "LDLT_METIS", "CHOLMOD", "UMFPACK"};
+  return names;
+}
+
+// the CMake option that builds a choice ("" for the ones every build has)
+static std::string optionFor(LinearSolver choice) {
+  if (choice == LinearSolver::LDLT_METIS) return "AMPLE_METIS";
+  if (choice == LinearSolver::CHOLMOD || choice == LinearSolver::UMFPACK) return "AMPLE_SUITESPARSE";
+  return "";
+}
+
+bool solverBuilt(LinearSolver choice) {
+  const std::string option = optionFor(choice);
+#ifdef AMPLE_HAVE_METIS
+  if (option == "AMPLE_METIS") return true;
+#endif
+#ifdef AMPLE_HAVE_SUITESPARSE
+  if (option == "AMPLE_SUITESPARSE") return true;
+#endif
+  return option.empty();
+}
+
+std::string solversBuilt() {
+  std::string list;
+  for (size_t k = 0; k < solverNames().size(); ++k)
+    if (solverBuilt(LinearSolver(k))) list += (list.empty() ? "" : ", ") + solverNames()[k];
+  return list;
+}
+
+void checkSolverBuilt(LinearSolver choice) {
+  const size_t k = size_t(choice);
+  if (k >= solverNames().size())
+    throw InputError("solver=" + std::to_string(k) + ": no such sparse solver; this build has " + solversBuilt());
+  if (solverBuilt(choice)) return;
+  const std::string library = optionFor(choice) == "AMPLE_METIS" ? "libmetis-dev" : "libsuitesparse-dev";
+  throw InputError("solver=" + solverNames()[k] + " is not in this build: it has solver=" + solversBuilt() +
+                   "; to add " + solverNames()[k] + ", configure with -D" + optionFor(choice) +
+                   "=ON (needs " + library + ") and rebuild");
+}
+
+}  // namespace ample
