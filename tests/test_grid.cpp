@@ -147,6 +147,19 @@ TEST_SUITE("elemForMP") {
     CHECK(cellsOf(m, Vector2d(3.95, 3.95), Vector2d(0.1, 0.1)) == std::vector<int>{15});
     CHECK(cellsOf(m, Vector2d(3.95, 1.5), Vector2d(0.1, 0.1)) == std::vector<int>{7});
   }
+  TEST_CASE("elemForMP: a domain too long for a point's 16 nodes throws RunError (no overrun)") {
+    // 8 x 1 cells are within MAXE = 9 but have 9 x 2 = 18 nodes > MAXN = 16 (a GIMP domain
+    // stretched by its domain update wrote past the point's node arrays)
+    const Mesh m = formCoord2D(10, 10, 10.0, 10.0);
+    std::array<int, MAXE> e;
+    CHECK_THROWS_AS(elemForMP(m, Vector2d(5.0, 5.5), Vector2d(3.9, 0.4), e), RunError);
+    CHECK_THROWS_AS(elemForMP(m, Vector2d(5.5, 5.0), Vector2d(1.9, 0.45), e), RunError);  // 5 x 2
+    CHECK_THROWS_AS(elemForMP(m, Vector2d(5.0, 5.0), Vector2d(NAN, 0.4), e), RunError);
+    CHECK_THROWS_AS(elemForMP(m, Vector2d(5.0, 5.0), Vector2d(1e300, 0.4), e), RunError);
+    // 4 x 2 cells, 5 x 3 = 15 nodes: still one point's
+    CHECK(cellsOf(m, Vector2d(6.0, 5.0), Vector2d(1.9, 0.45)) ==
+          std::vector<int>{44, 45, 46, 47, 54, 55, 56, 57});
+  }
   TEST_CASE("elemForMP: a point outside the grid throws RunError") {
     const Mesh m = formCoord2D(4, 4, 4.0, 4.0);
     std::array<int, MAXE> e;

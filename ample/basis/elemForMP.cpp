@@ -12,6 +12,16 @@
 
 namespace ample {
 
+// a GIMP domain too large for a point's arrays (more than 9 cells or 16 nodes, e.g. 8 x 1 cells)
+static std::string domainTooLarge(const Vector2d& mpC, const Vector2d& lp, const Mesh& mesh) {
+  std::ostringstream msg;
+  msg << "the domain of the material point at (" << mpC(0) << ", " << mpC(1) << ") has grown to lp = ("
+      << lp(0) << ", " << lp(1) << ") against cells of " << mesh.h(0) << " x " << mesh.h(1)
+      << ": it overlaps more than 9 cells or 16 nodes; try smaller load steps (substeps=4) or "
+         "another domain update (domainUpdate=)";
+  return msg.str();
+}
+
 // the regular grid: the cells from the spacing
 int elemForMP(const Mesh& mesh, const Vector2d& mpC, const Vector2d& lp,
               std::array<int, MAXE>& eIN) {
@@ -29,6 +39,8 @@ int elemForMP(const Mesh& mesh, const Vector2d& mpC, const Vector2d& lp,
           << mesh.origin(1) << ", " << mesh.origin(1) + mesh.nelsy * mesh.h(1) << "]";
       throw RunError(msg.str(), Failure::LeftGrid);
     }
+    if (!(hi - lo < 1e6))  // not finite, or so wide that the cell numbers below would overflow
+      throw RunError(domainTooLarge(mpC, lp, mesh));
     // BEGIN EXERCISE elemForMP
     if (lp(i) > 0.0) {
       first[i] = int(std::floor(lo + tol));
@@ -46,9 +58,8 @@ int elemForMP(const Mesh& mesh, const Vector2d& mpC, const Vector2d& lp,
     first[i] = std::clamp(first[i], 0, nels[i] - 1);  // a domain reaching past the grid
     last[i] = std::clamp(last[i], 0, nels[i] - 1);    // edge is cut there, as in the paper
   }
-  if ((last[0] - first[0] + 1) * (last[1] - first[1] + 1) > MAXE)
-    throw RunError("material point domain overlaps more than 3 x 3 cells (lp > h): refine "
-                   "the points or enlarge the grid spacing");
+  const int cx = last[0] - first[0] + 1, cy = last[1] - first[1] + 1;  // cells in x and y
+  if (cx * cy > MAXE || (cx + 1) * (cy + 1) > MAXN) throw RunError(domainTooLarge(mpC, lp, mesh));
   int ne = 0;
   for (int j = first[1]; j <= last[1]; ++j)
     for (int i = first[0]; i <= last[0]; ++i) eIN[ne++] = j * mesh.nelsx + i;
