@@ -1,7 +1,7 @@
 //--------------------------------------------------------------------------
 // ample — the analysis: load steps, Newton-Raphson iterations, material points
 //--------------------------------------------------------------------------
-// Seed 002 figs 4-5 and sec 3.5, on one page (the function ample below):
+// [AMPLE] figs 4-5 and sec 3.5, on one page (the function ample below):
 //   setupGrid
 //   for each load step lstp = 1..lstps
 //     elemMPinfo (basis at the start of the step), detExtForce (scaled by
@@ -17,7 +17,7 @@
 // the one line of both in the handler of a failed step (ghost > 0: retry it with
 // the ghost penalty, on from then; substeps > 0: retry it in halves), and
 // addGhostPenalty the one line that applies the penalty in the Newton loop. The
-// implicit boundaries of seed 003 (ibStiffness.h; none by default: nothing changes)
+// implicit boundaries of [Boundaries] (ibStiffness.h; none by default: nothing changes)
 // are three named lines: ibStiffness once per step, addImplicitBoundaries after
 // detMPs, moveBoundaries after updateMPs. Every timed call goes through timed(seconds, f,
 // args...) (plotting/runLog.h), which is f(args...) with a stopwatch around it.
@@ -112,7 +112,7 @@ void solve(Analysis& an, RunLog& log, const RunOptions& opt) {
     if (an.bodyForce) fext += timed(T.detExtForce, detBodyForce, nDoF, an.bodyForce, inc.lf1, mpData);
     const std::vector<BC> bc = scaled(mesh.bc, inc.bcScale(an.lstps));  // increments of this step
     const SpMat Kgp = ghostPenaltyOf(an);                            // remedy (off: empty)
-    const ImplicitBoundaries ib = implicitBoundariesOf(an, inc);     // seed 003 (none: empty)
+    const ImplicitBoundaries ib = implicitBoundariesOf(an, inc);     // [Boundaries] (none: empty)
     const std::vector<int> fd = timed(T.detFDoFs, detFDoFs, mesh, mpData, StiffnessSources{&Kgp, &ib.K},
                                           an.lone);
     Eigen::VectorXd uvw = Eigen::VectorXd::Zero(nDoF), frct = uvw, oobf = fext, fib = uvw;
@@ -127,7 +127,7 @@ void solve(Analysis& an, RunLog& log, const RunOptions& opt) {
         frct += ls.drct;
         timed(T.detMPs, [&] { detMPs(uvw, mpData, an.formulation, mps); });  // fint, Kt in place
         addGhostPenalty(Kgp, uvw, mps.Kt, mps.fint);                 // remedy (off: nothing)
-        fib = addImplicitBoundaries(ib, uvw, mps.Kt, mps.fint);      // seed 003 (none: 0)
+        fib = addImplicitBoundaries(ib, uvw, mps.Kt, mps.fint);      // [Boundaries] (none: 0)
         oobf = fext - mps.fint + frct;                               // eq 31 with reactions
         fErr = normalisedResidual(oobf, fext, frct + fib, an.frct, NRit);  // eq 35, IB reactions too
         recordPass(log, mpData, lstp, NRit, fErr, opt.quiet);        // throws on NaN
@@ -143,10 +143,10 @@ void solve(Analysis& an, RunLog& log, const RunOptions& opt) {
     recordStep(log, inc, NRit, fErr, Kff, true);
     an.frct = frct + fib;                                            // reactions, IB ones too
     an.uvw = uvw;
-    an.ibForce = boundaryForces(ib, uvw, int(an.boundaries.size()));  // seed 003 (none: empty)
+    an.ibForce = boundaryForces(ib, uvw, int(an.boundaries.size()));  // [Boundaries] (none: empty)
     timed(T.updateMPs, updateMPs, mesh, uvw, an.domainUpdate, mpData);
     if (an.fem) moveMesh(mesh, uvw);                                 // FEM: the mesh follows (MPM: reset)
-    moveBoundaries(an.boundaries, lstp, inc.bcScale(an.lstps));      // seed 003: by their du
+    moveBoundaries(an.boundaries, lstp, inc.bcScale(an.lstps));      // [Boundaries]: by their du
     if (!inc.last) continue;                                         // (remedy: a first half)
     if (an.afterStep) an.afterStep(an, lstp);                        // setup's hook
     timed(T.postPro, postPro, mesh, mpData, uvw, lstp, opt.vtkEvery, opt.outDir, opt.vtkFormat);
@@ -165,7 +165,7 @@ static void checkGeneralMesh(const Analysis& an) {
   const std::string mesh = std::string("the background mesh is a ") + meshName(an.mesh) +
                            " of " + std::to_string(an.mesh.nels()) + " cells";
   if (!an.boundaries.empty())
-    throw InputError("implicit boundaries (seed 003) need the regular grid (cutCells); " + mesh);
+    throw InputError("implicit boundaries ([Boundaries]) need the regular grid (cutCells); " + mesh);
   if (an.ghost > 0) throw InputError("ghost=" + std::to_string(an.ghost) + ": the ghost penalty "
                                      "needs the regular grid (its faces); " + mesh + "; use ghost=0");
   for (size_t p = 0; p < an.mpData.size(); ++p) {
@@ -236,7 +236,7 @@ static SpMat ghostPenaltyOf(const Analysis& an) {
   return ghostPenalty(an.mesh, an.ghost, E);
 }
 
-// seed 003: K_IB and f_IB of the implicit boundaries for this step (or its part, the
+// [Boundaries]: K_IB and f_IB of the implicit boundaries for this step (or its part, the
 // share bcScale of the step's prescribed increments); empty when there are none
 static ImplicitBoundaries implicitBoundariesOf(const Analysis& an, const Increment& inc) {
   return ibStiffness(an.mesh, an.boundaries, an.mpData, inc.lstp, inc.bcScale(an.lstps));
@@ -280,7 +280,7 @@ static void checkNotInverted(const std::vector<MaterialPoint>& mpData, int lstp,
 // be ~1e-16 and fErr ~1e17. There, and only there, the reactions of the last
 // converged step (frctLast) stand in. Pass 0 never ends the loop (NRit < 2), so no
 // converged result changes, and a step with loads keeps the paper's pass-0 value
-// (seed 000 table 8).
+// ([Lagrangian] table 8).
 static double normalisedResidual(const Eigen::VectorXd& oobf, const Eigen::VectorXd& fext,
                                  const Eigen::VectorXd& frct, const Eigen::VectorXd& frctLast, int NRit) {
   const bool noLoad = NRit == 0 && frctLast.size() == fext.size() &&

@@ -1,7 +1,7 @@
 //--------------------------------------------------------------------------
 // ample — the analysis: load steps, Newton-Raphson iterations, material points
 //--------------------------------------------------------------------------
-// Seed 002 sec 4, figs 4-5. ample builds the problem with the setup's
+// [AMPLE] sec 4, figs 4-5. ample builds the problem with the setup's
 // setupGrid, runs the loops (solve) and writes the output (see
 // plotting/writeOutput.h). solve is the loops alone, on an analysis already
 // set up, in memory: the tests call it.
@@ -34,7 +34,7 @@ struct RunOptions {
 
 int ample(const Setup& setup, const Params& P, const RunOptions& opt);
 
-// the load steps lstp = 1..an.lstps with their Newton-Raphson loops (seed 002
+// the load steps lstp = 1..an.lstps with their Newton-Raphson loops ([AMPLE]
 // fig 4 below setupGrid); by default quiet and without files
 void solve(Analysis& an, RunLog& log, const RunOptions& opt = RunOptions{"", 0, true, 0});
 

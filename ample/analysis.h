@@ -1,10 +1,10 @@
 //--------------------------------------------------------------------------
 // analysis.h — one problem as the main loop sees it: mesh, points, settings
 //--------------------------------------------------------------------------
-// Seed 002 sec 4: what setupGrid returns (the mesh and mpData of tables 3-4,
+// [AMPLE] sec 4: what setupGrid returns (the mesh and mpData of tables 3-4,
 // the load steps, gravity and the Newton-Raphson settings), with the
-// formulation and domain update of seed 000, the two remedies (off by
-// default), the implicit boundaries of seed 003 (none by default: nothing
+// formulation and domain update of [Lagrangian], the two remedies (off by
+// default), the implicit boundaries of [Boundaries] (none by default: nothing
 // changes and nothing costs) and a setup's optional hooks at the start and
 // end of a load step.
 // Data only: the bottom layer with mpData.h (docs/structure.md).
@@ -38,10 +38,10 @@ struct Analysis {
   double ghost = 0;                   // ghost-penalty factor of the edge cells (0: none)
   bool lone = true;                   // leave redundant lone-node dofs out of fd (detFDoFs)
   int ghostFrom = 0;                  // first load step the penalty was needed (0: not yet)
-  Formulation formulation = Formulation::UL;        // frame of equilibrium (seed 000)
-  DomainUpdate domainUpdate = DomainUpdate::Uii;    // GIMP domain update (seed 002 eq 34)
+  Formulation formulation = Formulation::UL;        // frame of equilibrium ([Lagrangian])
+  DomainUpdate domainUpdate = DomainUpdate::Uii;    // GIMP domain update ([AMPLE] eq 34)
   bool fem = false;                   // finite element mode: the mesh moves with the nodes (moveMesh)
-  std::vector<Boundary> boundaries;                 // implicit boundaries (seed 003); empty: none
+  std::vector<Boundary> boundaries;                 // implicit boundaries ([Boundaries]); empty: none
   Eigen::VectorXd frct;                             // reactions of the last converged step
   Eigen::VectorXd uvw;                              // its converged displacement increment
   std::vector<Vector2d> ibForce;                    // force of each implicit boundary on the body

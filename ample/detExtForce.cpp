@@ -1,7 +1,7 @@
 //--------------------------------------------------------------------------
 // detExtForce — nodal external forces from body forces and point forces
 //--------------------------------------------------------------------------
-// Seed 002 eqs 27-28. See detExtForce.h for inputs and outputs.
+// [AMPLE] eqs 27-28. See detExtForce.h for inputs and outputs.
 //--------------------------------------------------------------------------
 #include "detExtForce.h"
 #include "ample/classroom/exercise.h"

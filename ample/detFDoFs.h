@@ -1,9 +1,9 @@
 //--------------------------------------------------------------------------
 // detFDoFs — free degrees of freedom of the background grid
 //--------------------------------------------------------------------------
-// Seed 002 sec 4 and sec 5.3: the degrees of freedom of the nodes that carry
+// [AMPLE] sec 4 and sec 5.3: the degrees of freedom of the nodes that carry
 // stiffness less those with a Dirichlet condition; nodes that no point
-// supports are eliminated. Seed 002 takes the nodes of the active cells (eInA,
+// supports are eliminated. [AMPLE] takes the nodes of the active cells (eInA,
 // cells linked to a point): activeCellDoFs. detFDoFs, which the analysis
 // uses, takes the nodes linked to a point
 // (nIN: for GIMP/MPM the same set; a CPDI point does not link a node whose
@@ -11,7 +11,7 @@
 // the redundant dofs of nodes reached through one CPDI corner only:
 //   a node linked to one point p only, with the grid basis N_v non-zero at
 //   one corner c of p only, has S_v = w_c N_v(x_c) and dS_v = N_v(x_c) g_c
-//   (seed 001 sec 2 (iv)), so the displacements u_v of all such nodes of
+//   ([CPDI] sec 2 (iv)), so the displacements u_v of all such nodes of
 //   (p, c) enter the point's dF, position and forces only through
 //   sum_v N_v(x_c) u_v. With two or more of them free in a direction the
 //   stiffness is singular (a corner poking into an empty cell). Per (p, c)
@@ -34,7 +34,7 @@
 //   data only (link counts, S_v, dS_v), never an assembled sum.
 // Both rules drop a dof only where the point is the node's only stiffness: a node
 //   that the ghost penalty or an implicit boundary reaches (others) is not lone.
-// lone = false (the parameter lone=0) applies neither rule: seed 002's free set, with
+// lone = false (the parameter lone=0) applies neither rule: [AMPLE]'s free set, with
 //   which the 2x2 beam (a=2 mp=2) stops in load step 8 as in the paper (12 with the rules).
 // Inputs:  mesh (etpl, eInA, bc, nodes, coord, h) · [mpData (nIN, nn, Svp, corners)]
 //          · [others (the ghost penalty's and the implicit boundaries' K)]
@@ -54,6 +54,6 @@ using StiffnessSources = std::vector<const SpMat*>;
 std::vector<int> detFDoFs(const Mesh& mesh, const std::vector<MaterialPoint>& mpData,
                           const StiffnessSources& others = {},
                           bool lone = true);  // linked nodes (lone = false: no rule applied)
-std::vector<int> activeCellDoFs(const Mesh& mesh);  // seed 002's rule: nodes of active cells
+std::vector<int> activeCellDoFs(const Mesh& mesh);  // [AMPLE]'s rule: nodes of active cells
 
 }  // namespace ample

@@ -1,7 +1,7 @@
 //--------------------------------------------------------------------------
 // detMPs — internal force and stiffness of all material points (the point loop)
 //--------------------------------------------------------------------------
-// Seed 002 eqs 5-18, 30-31; seed 000 eqs 18-23 (PC); seed 003 eqs 2-3, 8-10
+// [AMPLE] eqs 5-18, 30-31; [Lagrangian] eqs 18-23 (PC); [Boundaries] eqs 2-3, 8-10
 // (SS). See detMPs.h for the steps, inputs and outputs.
 //--------------------------------------------------------------------------
 #include "detMPs.h"
@@ -39,7 +39,7 @@ ConstOut constitutive(const Vector6d& epsEtr, const MaterialPoint& mp) {  // cmT
 }
 
 //--------------------------------------------------------------------------
-// finiteStrainPoint — UL (seed 002 eqs 5-18) or PC (seed 000 eqs 18-23)
+// finiteStrainPoint — UL ([AMPLE] eqs 5-18) or PC ([Lagrangian] eqs 18-23)
 //--------------------------------------------------------------------------
 // Logarithmic elastic strain, Kirchhoff stress tau, sigma = tau / det(F).
 // bEn = exp(2 eps_e,n) (eq 9) is that of the start of the step: elasticLeftCG
@@ -57,16 +57,16 @@ PointTerms finiteStrainPoint(const Matrix3d& dF, const Matrix3d& bEn, Formulatio
   mp.sig = cm.Ksig / mp.F.determinant();                        // eq 6
 
   PointTerms t;
-  if (form == Formulation::UL) {                                // seed 002 eqs 14-18
-    t.A = formULstiff2D(mp.F, cm.D, mp.sig, BeT);               // seed 000 eq A.1
+  if (form == Formulation::UL) {                                // [AMPLE] eqs 14-18
+    t.A = formULstiff2D(mp.F, cm.D, mp.sig, BeT);               // [Lagrangian] eq A.1
     const Eigen::Matrix2d iF = dF.topLeftCorner<2, 2>().inverse();
     t.dSx.leftCols(mp.nn) = iF.transpose() * mp.dSvp.leftCols(mp.nn);  // eq 18: dS/dx
     t.Vp = dF.determinant() * mp.vp;                            // eq 15
     t.Sf = stressToTensor(mp.sig).topLeftCorner<2, 2>();
-  } else {                                                      // seed 000 eqs 18-23
+  } else {                                                      // [Lagrangian] eqs 18-23
     const double Jn = mp.Fn.determinant();
     const Matrix3d tau = stressToTensor(cm.Ksig);
-    t.A = formPCstiff2D(dF, Jn, cm.D, tau, bEn, BeT);           // seed 000 eq A.3
+    t.A = formPCstiff2D(dF, Jn, cm.D, tau, bEn, BeT);           // [Lagrangian] eq A.3
     t.dSx.leftCols(mp.nn) = mp.dSvp.leftCols(mp.nn);            // dS/dX~, no mapping
     t.Vp = mp.vp;                                               // V_p^n (eq 22)
     t.Sf = (tau * dF.inverse().transpose() / Jn).topLeftCorner<2, 2>();  // P~ (eq 18)
@@ -75,10 +75,10 @@ PointTerms finiteStrainPoint(const Matrix3d& dF, const Matrix3d& bEn, Formulatio
 }
 
 //--------------------------------------------------------------------------
-// smallStrainPoint — infinitesimal strain, linear elasticity (seed 003 sec 2)
+// smallStrainPoint — infinitesimal strain, linear elasticity ([Boundaries] sec 2)
 //--------------------------------------------------------------------------
 // eps = eps_n + sym(grad du), grad du = sum_v du_v (x) dS_v/dX~ with the basis
-// gradients of the start of the step (seed 003 eqs 2, 10); sigma = D eps (eq 3; cmType VM: the
+// gradients of the start of the step ([Boundaries] eqs 2, 10); sigma = D eps (eq 3; cmType VM: the
 // same radial return on the small strain); k_p = B' D B V_p, f_p = B' sigma V_p
 // (eqs 8-9) with B, V_p those of the start of the step. F stays I (no
 // configuration change), so V_p = det(F) V_p0 = V_p0 in updateMPs.

@@ -1,7 +1,7 @@
 //--------------------------------------------------------------------------
 // detMPs — internal force and stiffness of all material points (the point loop)
 //--------------------------------------------------------------------------
-// Seed 002 sec 2 (updated Lagrangian): for each point
+// [AMPLE] sec 2 (updated Lagrangian): for each point
 //   dF = I + sum_v du_v (x) dS_v/dX~            (eq 17)
 //   F = dF Fn;  b_e,tr = dF exp(2 eps_e,n) dF'  (eqs 7-9)
 //   eps_e,tr = ln(b_e,tr)/2                      (eq 10)
@@ -11,10 +11,10 @@
 //   k_p = [dS/dx]' a [dS/dx] V_p, f_p = [dS/dx]' sigma V_p, V_p = det(dF) V_p,n
 //                                                (eqs 14-16, a from formULstiff)
 // and assembles Kt = A k_p, fint = A f_p (eqs 30-31). With form = PC the
-// previously converged formulation of seed 000 sec 5 is used instead:
+// previously converged formulation of [Lagrangian] sec 5 is used instead:
 //   k_p = [dS/dX~]' A~ [dS/dX~] V_p^n, f_p = [dS/dX~]' P~ V_p^n, P~ = tau dF^-T / Jn
 //   (eqs 18, 21-23, A~ from formPCstiff); both give the same equilibrium.
-// With form = SS the small-strain method of seed 003 sec 2 (no dF, no log):
+// With form = SS the small-strain method of [Boundaries] sec 2 (no dF, no log):
 //   eps = eps_n + sym(grad du), grad du = sum du (x) dS/dX~;  sigma = D eps (eqs 2-3, 10)
 //   k_p = B' D B V_p0, f_p = B' sigma V_p0, B from dS/dX~   (eqs 6, 8-9)
 //   and F stays I, so the volume stays V_p0 (updateMPs: V_p = det(F) V_p0).

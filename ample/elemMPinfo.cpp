@@ -1,7 +1,7 @@
 //--------------------------------------------------------------------------
 // elemMPinfo — cells, nodes, basis functions and gradients of every point
 //--------------------------------------------------------------------------
-// Seed 002 sec 4. See elemMPinfo.h for inputs and outputs.
+// [AMPLE] sec 4. See elemMPinfo.h for inputs and outputs.
 //--------------------------------------------------------------------------
 #include "elemMPinfo.h"
 #include "ample/basis/MPMbasis.h"
@@ -15,7 +15,7 @@
 
 namespace ample {
 
-// CPDI: the cells that contain the four domain corners (seed 001 sec 2 (iii));
+// CPDI: the cells that contain the four domain corners ([CPDI] sec 2 (iii));
 // a corner on a cell edge is taken into the cell on the domain's side of it,
 // a corner past the grid edge into the cell at the edge (the point must be inside)
 static int cellsOfCorners(const Mesh& mesh, const MaterialPoint& mp, std::array<int, MAXE>& eIN) {
@@ -37,7 +37,7 @@ static int cellsOfCorners(const Mesh& mesh, const MaterialPoint& mp, std::array<
 // they carry no mass, force or stiffness from it, and linked they would put a dof
 // with an empty stiffness column into the system. This happens to CPDI points
 // whose corner lies on the far edge of its cell (e.g. a corner on the base, y = 0:
-// N = 0 there for the nodes of the cell's upper edge, seed 001 sec 2 (iii));
+// N = 0 there for the nodes of the cell's upper edge, [CPDI] sec 2 (iii));
 // GIMP/MPM cells are linked only when overlapped, so they lose no nodes.
 int dropNullNodes(MaterialPoint& mp) {
   int k = 0;

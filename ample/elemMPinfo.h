@@ -1,12 +1,12 @@
 //--------------------------------------------------------------------------
 // elemMPinfo — cells, nodes, basis functions and gradients of every point
 //--------------------------------------------------------------------------
-// Seed 002 sec 4, table 1: called once at the start of each load step, with
+// [AMPLE] sec 4, table 1: called once at the start of each load step, with
 // the positions and domains at the start of the step (X~); marks the active
 // cells (those linked to any point) for detFDoFs. A general mesh (docs/meshes.md)
 // gets its bucket grid rebuilt first (buildCellSearch: a setup may move the nodes). GIMP/MPM points take the
 // cells their domain overlaps (elemForMP); CPDI points the cells holding their
-// four domain corners (seed 001 sec 2 (iii)). A node of those cells whose basis
+// four domain corners ([CPDI] sec 2 (iii)). A node of those cells whose basis
 // value and gradient are both zero at the point is not linked (dropNullNodes).
 // keepCells (the finite element mode, Analysis::fem): a point that has its
 // cell from an earlier step keeps it without a search, as an integration point

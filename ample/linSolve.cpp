@@ -1,7 +1,7 @@
 //--------------------------------------------------------------------------
 // linSolve — linear solve for the displacement and reaction increments
 //--------------------------------------------------------------------------
-// Seed 002 eq 29. See linSolve.h for inputs and outputs.
+// [AMPLE] eq 29. See linSolve.h for inputs and outputs.
 //--------------------------------------------------------------------------
 #include "linSolve.h"
 #include "errors.h"

@@ -1,7 +1,7 @@
 //--------------------------------------------------------------------------
 // linSolve — linear solve for the displacement and reaction increments
 //--------------------------------------------------------------------------
-// Seed 002 eq 29. Skipped at NRit == 0 (that pass only builds Kt); the
+// [AMPLE] eq 29. Skipped at NRit == 0 (that pass only builds Kt); the
 // prescribed displacement increments enter at NRit == 1 and are zero after:
 //   duvw(bc) = prescribed, duvw(fd) = Kt(fd,fd) \ (oobf(fd) - Kt(fd,bc) duvw(bc)),
 //   drct(bc) = Kt(bc,:) duvw - oobf(bc).

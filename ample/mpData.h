@@ -1,7 +1,7 @@
 //--------------------------------------------------------------------------
 // mpData.h — the two data structures of the analysis: material points and mesh
 //--------------------------------------------------------------------------
-// Seed 002 tables 3 (mpData) and 4 (mesh). One MaterialPoint holds the whole
+// [AMPLE] tables 3 (mpData) and 4 (mesh). One MaterialPoint holds the whole
 // state of one point, so a debugger shows it at once (`p mpData[17]`).
 // Indices are 0-based: node n owns the degrees of freedom 2n (x) and 2n+1 (y).
 // Stress and strain are 6-vectors in the order [xx yy zz xy yz zx]; strains
@@ -25,15 +25,15 @@ constexpr int nen = 4;       // most nodes per cell (bi-linear quadrilateral; a 
 constexpr int MAXN = 16;     // most nodes one point may influence (4 x 4)
 constexpr int MAXE = 9;      // most cells one point domain may overlap (3 x 3)
 
-enum class MpType { MPM = 1, GIMP = 2, CPDI1 = 3, CPDI2 = 4 };  // seed 002: mpType (+ seed 001)
-enum class CmType { Elastic = 1, VonMises = 2 };                 // seed 002: cmType
+enum class MpType { MPM = 1, GIMP = 2, CPDI1 = 3, CPDI2 = 4 };  // [AMPLE]: mpType (+ [CPDI])
+enum class CmType { Elastic = 1, VonMises = 2 };                 // [AMPLE]: cmType
 enum class Formulation { UL = 1, PC = 2, SS = 3 };  // updated / previously converged Lagrangian
-                                                    // (seed 000), small strain (seed 003 sec 2)
+                                                    // ([Lagrangian]), small strain ([Boundaries] sec 2)
 enum class LinearSolver {                   // the sparse solve of Kt(fd,fd) (freeSystem.h)
   LU = 0, LDLT = 1, LDLT_METIS = 2, CHOLMOD = 3, UMFPACK = 4
-};  // SparseLU (design card) · SimplicialLDLT if symmetric · the same with METIS (-DAMPLE_METIS=ON) ·
+};  // SparseLU (the default) · SimplicialLDLT if symmetric · the same with METIS (-DAMPLE_METIS=ON) ·
     // CHOLMOD supernodal LL^T if symmetric · UMFPACK LU (both -DAMPLE_SUITESPARSE=ON)
-enum class DomainUpdate {                   // GIMP domain updating, seed 000 sec 6.4, table 2
+enum class DomainUpdate {                   // GIMP domain updating, [Lagrangian] sec 6.4, table 2
   None = 0, DetF = 1, Fii = 2, Uii = 3, Corner = 4, FiiVol = 5, FiiVolInc = 6
 };  //  -     eq 32     eq 33    eq 34    eqs 35-37   eq 38      eq 39
 

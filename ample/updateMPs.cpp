@@ -1,7 +1,7 @@
 //--------------------------------------------------------------------------
 // updateMPs — material point positions, volumes, domains and state at step end
 //--------------------------------------------------------------------------
-// Seed 002 eqs 15, 33, 34. See updateMPs.h for inputs and outputs.
+// [AMPLE] eqs 15, 33, 34. See updateMPs.h for inputs and outputs.
 //--------------------------------------------------------------------------
 #include "updateMPs.h"
 #include "ample/classroom/exercise.h"

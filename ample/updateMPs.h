@@ -1,11 +1,11 @@
 //--------------------------------------------------------------------------
 // updateMPs — material point positions, volumes, domains and state at step end
 //--------------------------------------------------------------------------
-// Seed 002 sec 3.4:
+// [AMPLE] sec 3.4:
 //   x_p = X~_p + sum_v S_vp du_v     (eq 33), also the total displacement u
 //   V_p = det(F) V_p^0               (eq 15)
-//   domains: updateDomain (GIMP eq 34 by default, or seed 000 eqs 32-39;
-//            CPDI1/CPDI2 of seed 001), nothing for standard MPM points
+//   domains: updateDomain (GIMP eq 34 by default, or [Lagrangian] eqs 32-39;
+//            CPDI1/CPDI2 of [CPDI]), nothing for standard MPM points
 //   Fn = F, eps_e,n = eps_e          (converged state for the next step)
 // Inputs:  mesh · uvw (nDoF) converged displacement increment of the step ·
 //          method (GIMP domain update) · mpData

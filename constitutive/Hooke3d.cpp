@@ -1,7 +1,7 @@
 //--------------------------------------------------------------------------
 // Hooke3d — isotropic linear elasticity in Hencky strain / Kirchhoff stress
 //--------------------------------------------------------------------------
-// Seed 002 eq 5. See Hooke3d.h for inputs and outputs.
+// [AMPLE] eq 5. See Hooke3d.h for inputs and outputs.
 //--------------------------------------------------------------------------
 #include "Hooke3d.h"
 #include "ample/classroom/exercise.h"

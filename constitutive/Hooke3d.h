@@ -1,9 +1,9 @@
 //--------------------------------------------------------------------------
 // Hooke3d — isotropic linear elasticity in Hencky strain / Kirchhoff stress
 //--------------------------------------------------------------------------
-// Seed 002 eq 5: tau = D eps_e, with D the 6x6 isotropic stiffness acting on
+// [AMPLE] eq 5: tau = D eps_e, with D the 6x6 isotropic stiffness acting on
 // engineering shear strains. With logarithmic strain and Kirchhoff stress
-// this is hyperelastic for any deformation (seed 002 sec 2.1).
+// this is hyperelastic for any deformation ([AMPLE] sec 2.1).
 // Inputs:  epsEtr (6) trial elastic log strain · mCst (3) [E, nu, -]
 // Outputs: D (6x6) · Ksig (6) Kirchhoff stress · epsE (6) = epsEtr
 // Tests:   tests/test_constitutive.cpp

@@ -1,7 +1,7 @@
 //--------------------------------------------------------------------------
 // VMconst — von Mises perfect plasticity: backward-Euler return, algorithmic tangent
 //--------------------------------------------------------------------------
-// Seed 002 eq 11. See VMconst.h for the algorithm, inputs and outputs.
+// [AMPLE] eq 11. See VMconst.h for the algorithm, inputs and outputs.
 //--------------------------------------------------------------------------
 #include "VMconst.h"
 #include "ample/classroom/exercise.h"

@@ -1,7 +1,7 @@
 //--------------------------------------------------------------------------
 // VMconst — von Mises perfect plasticity: backward-Euler return, algorithmic tangent
 //--------------------------------------------------------------------------
-// Seed 002 eq 11: f = rho/rho_y - 1, rho = sqrt(2 J2) = |s|. Elastic
+// [AMPLE] eq 11: f = rho/rho_y - 1, rho = sqrt(2 J2) = |s|. Elastic
 // predictor (eq 5); if f > 0 the associated backward-Euler corrector returns
 // the deviatoric stress radially, s = (rho_y/rho_tr) s_tr, which is the exact
 // solution of the backward-Euler equations for this surface. The consistent

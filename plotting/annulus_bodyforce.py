@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""annulus_bodyforce.py — the body force of the manufactured annulus (seed 000 sec 7.4, eq 44).
+"""annulus_bodyforce.py — the body force of the manufactured annulus ([Lagrangian] sec 7.4, eq 44).
 
 Derivation (docs/annulus.md): the motion x = Q(theta(R)) X with
 theta = alpha 16 (R-Ri)^2 (R-Ro)^2 / (Ri-Ro)^4 keeps every radius (r = R) and turns the

@@ -1,5 +1,5 @@
 #!/bin/bash
-# annulus_sweep.sh — fig 19 of seed 000: the annulus error against h for mpTri = 1, 4, 8, 9, 16
+# annulus_sweep.sh — fig 19 of [Lagrangian]: the annulus error against h for mpTri = 1, 4, 8, 9, 16
 # (both readings of the paper's "12, 22, 23, 24"); each run capped at CAP seconds.
 # Writes docs/results/annulus.csv (h, mpTri, error, max point error, points, seconds, rc).
 # Run from the repository root after building: plotting/annulus_sweep.sh [CAP]

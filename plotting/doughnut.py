@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""Doughnut twist (seed 001 sec 3.2): runs the setup for each method and plots
+"""Doughnut twist ([CPDI] sec 3.2): runs the setup for each method and plots
 fig 6 (displacement along theta = 0 at alpha = 10 degrees, and the difference to FE)
 and figs 7-8 (f / (C E) against alpha). Usage:
   plotting/doughnut.py BUILD/ample OUTDIR [steps] [nr nc] [hole]

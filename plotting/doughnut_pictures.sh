@@ -1,5 +1,5 @@
 #!/bin/bash
-# The pictures of docs/doughnut.md: deformed points coloured by rho_vonMises (seed 001 figs 9-10).
+# The pictures of docs/doughnut.md: deformed points coloured by rho_vonMises ([CPDI] figs 9-10).
 # usage (from the top folder, after a Release build): plotting/doughnut_pictures.sh
 cd "$(dirname "$0")/.."
 B=build/release/ample

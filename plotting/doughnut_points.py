@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""doughnut_points.py — the deformed material points of doughnut runs (seed 001 figs 9-10).
+"""doughnut_points.py — the deformed material points of doughnut runs ([CPDI] figs 9-10).
 
 One row per run, one column per twist angle; each point a dot coloured by the field
 (default rho_vonMises), one colour scale for the figure. A panel whose load step the run

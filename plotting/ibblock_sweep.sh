@@ -1,5 +1,5 @@
 #!/bin/sh
-# ibblock_sweep.sh — seed 003 figs 10-13: the contained block's ru and r_sxx (eqs 29-30)
+# ibblock_sweep.sh — [Boundaries] figs 10-13: the contained block's ru and r_sxx (eqs 29-30)
 # against the grid spacing h and the band width delta/h, at 30, 45 and 90 degrees, with
 # the paper's K2 coupling (ibK2=0) and the consistent one (ibK2=1).
 # usage: plotting/ibblock_sweep.sh [build/release/ample] > docs/results/ibblock_sweep.csv

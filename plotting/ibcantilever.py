@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-# ibcantilever.py — the runs and plots of the slender cantilever (seed 003 sec 5.4, figs 18, 19, 21)
+# ibcantilever.py — the runs and plots of the slender cantilever ([Boundaries] sec 5.4, figs 18, 19, 21)
 #
 # --run: runs build/release/ample ibcantilever (one run at a time, < 1 min each on the shared
 # machine) and writes to docs/results:

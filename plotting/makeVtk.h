@@ -1,7 +1,7 @@
 //--------------------------------------------------------------------------
 // makeVtk — legacy VTK file of the background grid
 //--------------------------------------------------------------------------
-// Seed 002 sec 5.2 (fig 13): an unstructured grid of quads (z = 0), readable
+// [AMPLE] sec 5.2 (fig 13): an unstructured grid of quads (z = 0), readable
 // by ParaView and VisIt, with the nodal displacements uvw of a load step as
 // point data when given (mesh_<lstp>.vtk; none for mesh.vtk). Written to a
 // temporary name, then renamed. ASCII (reals as "double", 15 digits) or BINARY

@@ -1,7 +1,7 @@
 //--------------------------------------------------------------------------
 // makeVtkMP — legacy VTK file of the material points of one load step
 //--------------------------------------------------------------------------
-// Seed 002 sec 5.2 (fig 13): mpData_<lstp>.vtk, one vertex per point at its
+// [AMPLE] sec 5.2 (fig 13): mpData_<lstp>.vtk, one vertex per point at its
 // current position with point data: displacement (vector), Cauchy stress
 // sig_xx sig_yy sig_zz sig_xy, von Mises rho = sqrt(2 J2), volume, domain half
 // lengths lp. Written to a temporary name, then renamed. ASCII (reals as

@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""plot_annulus.py — fig 19 of seed 000: annulus displacement error against h (docs/results/annulus.csv)
+"""plot_annulus.py — fig 19 of [Lagrangian]: annulus displacement error against h (docs/results/annulus.csv)
 and the observed rates between successive meshes. Writes docs/results/annulus.png and prints the rates."""
 import csv, math
 import matplotlib

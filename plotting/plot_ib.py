@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-# plot_ib.py — plots and tables of seed 003 secs 5.2 and 5.3 from the CSV files of ample_bench
+# plot_ib.py — plots and tables of [Boundaries] secs 5.2 and 5.3 from the CSV files of ample_bench
 #
 # Reads docs/results/deepbeam.csv and ibshear.csv (ample_bench deepbeam ibshear) and writes
 # deepbeam.png (tables II and III, figs 15a-b: ours with both K2 couplings beside the paper's)
@@ -19,7 +19,7 @@ from bench_csv import param  # noqa: E402
 
 OUT = sys.argv[1] if len(sys.argv) > 1 else "docs/results"
 PAPER_II = {3: 1.6653e-3, 5: 5.9450e-4, 10: 1.4812e-4, 15: 6.5788e-5, 20: 3.6998e-5,
-            25: 2.3676e-5, 40: 1.0277e-5}                          # seed 003 table II
+            25: 2.3676e-5, 40: 1.0277e-5}                          # [Boundaries] table II
 PAPER_III = {0.01: (242, 9.313e-4), 0.005: (882, 3.110e-4), 0.002: (5202, 7.558e-5),
              0.001: (20402, 2.670e-5)}                              # table III (dofs, rA)
 COUPLING = {"0": "paper K2 (ibK2=0)", "1": "consistent K2 (ibK2=1)"}

@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""plot_ibblock.py — seed 003 figs 10-13 from docs/results/ibblock_sweep.csv.
+"""plot_ibblock.py — [Boundaries] figs 10-13 from docs/results/ibblock_sweep.csv.
 
 Top row (figs 10-12): ru against 1/h (1/mm) for each delta/h, at 30, 45 and 90 degrees;
 bottom row left (fig 13): ru against delta/h for each h at 90 degrees. Solid lines: the
@@ -35,12 +35,12 @@ for col, th in enumerate((30, 45, 90)):
     a = ax[0][col]
     curves(a, lambda r, d: r["theta"] == th and r["delta_over_h"] == d, lambda r: 1e-3 / r["h_m"],
            "ru", deltas, lambda d: f"delta/h = {d:g}")
-    a.set_title(f"{th} degrees (seed 003 fig {10 if th == 30 else 11 if th == 45 else 12})")
+    a.set_title(f"{th} degrees ([Boundaries] fig {10 if th == 30 else 11 if th == 45 else 12})")
     a.set(xlabel="1/h (1/mm)", ylabel="ru (eq 29)")
 ax[0][0].legend(fontsize=7)
 curves(ax[1][0], lambda r, h: r["theta"] == 90 and r["h_m"] == h, lambda r: r["delta_over_h"],
        "ru", hs, lambda h: f"h = {h * 1e3:g} mm")
-ax[1][0].set(title="90 degrees: ru against delta/h (seed 003 fig 13)", xlabel="delta/h",
+ax[1][0].set(title="90 degrees: ru against delta/h ([Boundaries] fig 13)", xlabel="delta/h",
              ylabel="ru (eq 29)")
 ax[1][0].legend(fontsize=7)
 curves(ax[1][1], lambda r, th: r["theta"] == th and r["h_m"] == 0.01, lambda r: r["delta_over_h"],

@@ -3,7 +3,7 @@
 
 Reads the legacy VTK files mpData_<lstp>.vtk that `ample <setup> --vtk 1` writes
 (points and their scalars) and draws one panel per load step, each point a dot
-coloured by the field (e.g. uy for the footing of seed 003 fig 22, ux for the
+coloured by the field (e.g. uy for the footing of [Boundaries] fig 22, ux for the
 funnel of fig 23), with one colour scale for all panels.
 
 usage: plot_points.py OUTDIR FIELD OUT.png LSTP [LSTP ...] [--mm] [--title TEXT]

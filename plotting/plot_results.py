@@ -71,7 +71,7 @@ tables = ["# Benchmark tables\n", "Written by plotting/plot_results.py from the 
 comp = rows("compaction")
 if comp:
     fig, ax = plt.subplots(1, 2, figsize=(11, 4.2))
-    tables.append("\n## Compaction (seed 002 fig 9): error of eq 37, 2x2 points per cell\n")
+    tables.append("\n## Compaction ([AMPLE] fig 9): error of eq 37, 2x2 points per cell\n")
     tables.append("| method | nelsy | points | error | wall s | NR its |\n|---|---|---|---|---|---|\n")
     for t in range(1, 5):
         rs = [r for r in comp if param(r, "mpType") == str(t) and r["converged"] == "1"]
@@ -93,7 +93,7 @@ if comp:
 
 # 2. scaling -----------------------------------------------------------------------------------
 # curves: the compaction column and the collapse with each solver= (LU, LDLT); the collapse
-# before issue 14 (scaling2d_before.csv: main at 8eb7125, SparseLU, run the same day), dashed
+# before the performance work of 2026-12-01/02 (scaling2d_before.csv: main at 8eb7125, SparseLU, run the same day), dashed
 scal = rows("scaling") + rows("scaling2d")
 before = rows("scaling2d_before")
 if scal:
@@ -102,7 +102,7 @@ if scal:
     tables.append("| setup | parameters | points | NR its | wall s | detMPs s | linSolve s | us per point-iteration (detMPs) | peak kB | kB per point |\n|---|---|---|---|---|---|---|---|---|---|\n")
     curves = [("compaction", sv, m, scal, "compaction solver=" + sv) for sv, m in (("LU", "o-"), ("LDLT", "D-"))]
     curves += [("collapse", sv, m, scal, "collapse solver=" + sv) for sv, m in (("LU", "s-"), ("LDLT", "^-"))]
-    curves += [("collapse", "LU", "s--", before, "collapse before issue 14 (LU)")]
+    curves += [("collapse", "LU", "s--", before, "collapse at 8eb7125 (LU)")]
     for setup, solver, mark, src, label in curves:
         rs = [r for r in src if r["setup"] == setup and r["converged"] == "1" and
               (solver is None or param(r, "solver", "LU") == solver)]
@@ -172,7 +172,7 @@ PUB6 = {(3, 2.0): (13.343, 6.357), (3, 1.0): (13.662, 6.245), (3, 0.5): (13.731,
         (9, 2.0): (13.380, 6.452), (9, 1.0): (13.750, 6.289), (9, 0.5): (13.812, 6.255), (9, 0.25): (13.863, 6.226)}
 col = rows("collapse")
 if col:
-    tables.append("\n## Collapse: extent / height (m) against seed 002 table 5 (GIMP) and seed 000 table 6 (MPM)\n")
+    tables.append("\n## Collapse: extent / height (m) against [AMPLE] table 5 (GIMP) and [Lagrangian] table 6 (MPM)\n")
     tables.append("| method | points per cell | h (m) | ours | published | difference | wall s |\n|---|---|---|---|---|---|---|\n")
     for r in col:
         t, mp, h = int(param(r, "mpType")), int(param(r, "mp")), 2.0 / int(param(r, "a"))
@@ -184,8 +184,8 @@ if col:
             "%+.3f / %+.3f" % (ours[0] - pub[0], ours[1] - pub[1]) if pub and r["converged"] == "1" else "-", num(r, "wall_s")))
 
 # 5. Newton tables -------------------------------------------------------------------------------
-for c, steps, pub in ((0, (10, 20, 30, 40), "seed 000 table 8 (collapse, GIMP h = 1 m, 6x6)"),
-                      (1, (10, 20, 40, 49, 50), "seed 000 table 3 (beam, GIMP h = 0.125 m, 6x6)")):
+for c, steps, pub in ((0, (10, 20, 30, 40), "[Lagrangian] table 8 (collapse, GIMP h = 1 m, 6x6)"),
+                      (1, (10, 20, 40, 49, 50), "[Lagrangian] table 3 (beam, GIMP h = 0.125 m, 6x6)")):
     path = os.path.join(OUT, "newton_%d_residuals.csv" % c)
     if not os.path.exists(path):
         continue
@@ -207,7 +207,7 @@ for c, steps, pub in ((0, (10, 20, 30, 40), "seed 000 table 8 (collapse, GIMP h 
 TIMES = ["elemMPinfo", "detExtForce", "detFDoFs", "detMPs", "linSolve", "updateMPs", "postPro"]
 split = [r for r in scal if r["setup"] == "compaction" and param(r, "nelsy") == "4096"] + beam[:1]
 if split:
-    tables.append("\n## Where the time goes (compare seed 000 table 5)\n")
+    tables.append("\n## Where the time goes (compare [Lagrangian] table 5)\n")
     tables.append("| run | " + " | ".join(TIMES) + " | other |\n|" + "---|" * (len(TIMES) + 2) + "\n")
     for r in split:
         w = num(r, "wall_s")
@@ -217,7 +217,7 @@ met = rows("methods")
 if met:
     PUB7 = {"detF": (13.645, 6.316), "Fii": (14.415, 5.546), "Uii": (13.425, 6.441), "corner": (13.769, 6.392),
             "FiiVol": (13.769, 6.257), "FiiVolInc": (13.769, 6.257), "CPDI2": (13.780, 6.292)}
-    tables.append("\n## Methods: formulations, GIMP domain updates (seed 000 table 7, as printed), CPDI\n")
+    tables.append("\n## Methods: formulations, GIMP domain updates ([Lagrangian] table 7, as printed), CPDI\n")
     tables.append("| run | converged | extent / height or error | published | NR its | wall s | detMPs s |\n|---|---|---|---|---|---|---|\n")
     for r in met:
         key = param(r, "domainUpdate") or param(r, "mpType")

@@ -1,7 +1,7 @@
 //--------------------------------------------------------------------------
 // postPro — VTK output of a converged load step
 //--------------------------------------------------------------------------
-// Seed 002 sec 5.2 (fig 13): every vtkEvery load steps mpData_<lstp>.vtk (the
+// [AMPLE] sec 5.2 (fig 13): every vtkEvery load steps mpData_<lstp>.vtk (the
 // points) and mesh_<lstp>.vtk (the grid of that step with its nodal
 // displacements uvw, as AMPLE writes it; a grid that moves, as the stretch's,
 // is written as it is in that step); mesh.vtk (the grid alone) once, with the

@@ -1,5 +1,5 @@
 //--------------------------------------------------------------------------
-// annulus — elastic annulus twisted by a manufactured body force (seed 000 sec 7.4)
+// annulus — elastic annulus twisted by a manufactured body force ([Lagrangian] sec 7.4)
 //--------------------------------------------------------------------------
 // Ri = 0.75 m, Ro = 1.25 m, E = 1 Pa, nu = 0, alpha = 0.1 rad (eq 44) over 10
 // load steps; the nodes on both circles fixed. Background mesh: linear

@@ -1,5 +1,5 @@
 //--------------------------------------------------------------------------
-// annulus.h — the manufactured solution of the elastic annulus (seed 000 sec 7.4)
+// annulus.h — the manufactured solution of the elastic annulus ([Lagrangian] sec 7.4)
 //--------------------------------------------------------------------------
 // Eq 44: every circle R of the annulus Ri <= R <= Ro turns by
 //   theta(R) = alpha 16 (R - Ri)^2 (R - Ro)^2 / (Ri - Ro)^4,
@@ -18,7 +18,7 @@
 
 namespace ample::annulus {
 
-constexpr double Ri = 0.75, Ro = 1.25;          // radii (m), seed 000 sec 7.4
+constexpr double Ri = 0.75, Ro = 1.25;          // radii (m), [Lagrangian] sec 7.4
 
 double theta(double R, double alpha);           // eq 44
 Vector2d displacement(const Vector2d& X, double alpha);     // u = Q(theta) X - X

@@ -1,8 +1,8 @@
 //--------------------------------------------------------------------------
-// beam — large-deflection elastic cantilever with a tip load (seed 002 sec 5.2)
+// beam — large-deflection elastic cantilever with a tip load ([AMPLE] sec 5.2)
 //--------------------------------------------------------------------------
 // Beam l = 10 m by d = 1 m along the top of an 11 m x 10 m grid, h = 0.5 m / a
-// (a = 2: h = 0.25 m as in seed 002 figs 12 and 14),
+// (a = 2: h = 0.25 m as in [AMPLE] figs 12 and 14),
 // mp x mp GIMP points per cell (6 x 6), E = 12 MPa, nu = 0.2, no gravity.
 // Tip load P = 100 kN downwards, split between the two points nearest the
 // free end either side of the neutral axis, over 50 load steps. Rollers on

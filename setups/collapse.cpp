@@ -1,14 +1,14 @@
 //--------------------------------------------------------------------------
-// collapse — von Mises block collapsing under self weight (seed 002 sec 5.3)
+// collapse — von Mises block collapsing under self weight ([AMPLE] sec 5.3)
 //--------------------------------------------------------------------------
 // Half of a 16 m x 8 m block (8 m x 8 m, symmetry on x = 0) in a 16 m x 8 m
 // grid, h = 2 m / a, mp x mp GIMP points per cell, E = 1 MPa, nu = 0.3,
 // rho_y = 20 kPa, unit weight 10 kN/m3 (rho = 1000, g = 10) over 40 load
 // steps, rollers on the base and on the left edge.
-//   ample collapse a=2 mp=3     # h = 1 m, seed 002 table 5: 13.781 / 6.194
+//   ample collapse a=2 mp=3     # h = 1 m, [AMPLE] table 5: 13.781 / 6.194
 // Outputs: Analysis · results: final extent and height, measured to the edge
 //          of the point domains max(x + lpx), max(y + lpy) (GIMP) or to the
-//          centres plus the initial half spacing h/(2 mp) (MPM, seed 000 table 6)
+//          centres plus the initial half spacing h/(2 mp) (MPM, [Lagrangian] table 6)
 // Tests:   tests/test_ample.cpp
 //--------------------------------------------------------------------------
 #include "ample/meshes/formCoord2D.h"

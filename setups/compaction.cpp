@@ -1,5 +1,5 @@
 //--------------------------------------------------------------------------
-// compaction — elastic column compacting under its own weight (seed 002 sec 5.1)
+// compaction — elastic column compacting under its own weight ([AMPLE] sec 5.1)
 //--------------------------------------------------------------------------
 // Column of height l0 = 50 m, one square cell wide (nelsx = 1), nelsy cells
 // high, E = 10 kPa, nu = 0, rho = 80 kg/m3, g = 10 m/s2 over 40 load steps,

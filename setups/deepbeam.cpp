@@ -1,6 +1,6 @@
 //--------------------------------------------------------------------------
 // deepbeam — a deep cantilever under its own weight, fixed by an implicit boundary
-//             (seed 003 sec 5.2, tables II and III)
+//             ([Boundaries] sec 5.2, tables II and III)
 //--------------------------------------------------------------------------
 // A 100 x 100 mm body (L = 0.1 m), its left side fully fixed (u = 0) by an
 // implicit boundary (BoundaryType::Fixed), loaded by the body force
@@ -48,7 +48,7 @@ static const double g = 10.0;                          // body force = rho g (m/
 static const double roomBelow = 0.06, roomRight = 0.03;  // grid room for the sag (m)
 
 Params params() {
-  Params P = seed003Params(1, 4);
+  Params P = boundariesParams(1, 4);
   for (Param& p : P) {
     if (p.name == "lstps") p.integer(1, 1).help("load steps: one (the paper's; v(A) is its nodal solution)");
     if (p.name == "mp") p.integer(1, 40);            // table II goes to 40 x 40

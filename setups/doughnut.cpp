@@ -1,5 +1,5 @@
 //--------------------------------------------------------------------------
-// doughnut — twist of a confined annulus, MPM / CPDI1 / CPDI2 / FE (seed 001 sec 3.2)
+// doughnut — twist of a confined annulus, MPM / CPDI1 / CPDI2 / FE ([CPDI] sec 3.2)
 //--------------------------------------------------------------------------
 // Fig 5: outer circle R = 10 fixed; hole a circle A = B = 5 or an ellipse
 // A = 6, B = 4 (hole=1); E = 1e6, nu = 0, von Mises rho_y = 1e6 (rhoY); the

@@ -1,5 +1,5 @@
 //--------------------------------------------------------------------------
-// footing — a rough rigid footing pushed into an elastic domain (seed 003 sec 5.5)
+// footing — a rough rigid footing pushed into an elastic domain ([Boundaries] sec 5.5)
 //--------------------------------------------------------------------------
 // A 3 x 3 m elastic domain (E = 1000 MPa, nu = 0.3, plane strain), h = 0.2 m,
 // 2 x 2 standard MPM points per cell (sec 5.5), every support an implicit
@@ -28,7 +28,7 @@ namespace ample::footing {
 static const double L = 3.0;  // side of the domain (m)
 
 Params params() {
-  Params P = seed003Params(20, 2);
+  Params P = boundariesParams(20, 2);
   P.push_back(Param("h", 0.2).range(0.02, 1.0).help("grid spacing (m); 3 / h a whole number"));
   P.push_back(Param("B", 1.0).range(0.1, 3.0).help("footing width (m), centred on the top (ours)"));
   P.push_back(Param("push", 1.0).range(0, 1.5).help("total footing displacement (m), downwards"));

@@ -1,5 +1,5 @@
 //--------------------------------------------------------------------------
-// funnel — an elastic body forced through a curved funnel (seed 003 sec 5.6)
+// funnel — an elastic body forced through a curved funnel ([Boundaries] sec 5.6)
 //--------------------------------------------------------------------------
 // The funnel's walls are curved implicit rollers (ample/boundaries/ibStiffness.h), one
 // straight segment per grid column (the paper: one per cell the curve crosses;
@@ -43,7 +43,7 @@ static double slope(double x) {  // dH/dx
 }
 
 Params params() {
-  Params P = seed003Params(6, 2);
+  Params P = boundariesParams(6, 2);
   P.push_back(Param("h", 4.0 / 3 * mm).range(0.25 * mm, 4 * mm).help("grid spacing (m)"));
   P.push_back(Param("normals", 1).choice(0, {"segments", "curve"})
       .help("normal of K2, K3 on the walls: each segment's own, or the curve's, varying along "

@@ -1,5 +1,5 @@
 //--------------------------------------------------------------------------
-// ibblock — compression of a contained block by implicit boundaries (seed 003 sec 5.1)
+// ibblock — compression of a contained block by implicit boundaries ([Boundaries] sec 5.1)
 //--------------------------------------------------------------------------
 // A 100 x 100 mm block (L = 0.1 m) in rollers on three sides (implicit
 // boundaries, ample/boundaries/ibStiffness.h), its fourth side pushed 1 mm (du = 1e-3 m)
@@ -27,7 +27,7 @@ namespace ample::ibblock {
 static const double L = 0.1;  // block side (m)
 
 Params params() {
-  Params P = seed003Params(1, 1);
+  Params P = boundariesParams(1, 1);
   for (Param& p : P)  // results() compares with the one-push solution: a second step pushes again
     if (p.name == "lstps") p.integer(1, 1).help("load steps: one (the exact solution is that of one push du)");
   P.push_back(Param("theta", 0).range(-360, 360).help("rotation of the block to the grid (degrees)"));

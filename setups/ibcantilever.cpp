@@ -1,5 +1,5 @@
 //--------------------------------------------------------------------------
-// ibcantilever — slender cantilever at 0, 45 and 90 degrees to the grid (seed 003 sec 5.4)
+// ibcantilever — slender cantilever at 0, 45 and 90 degrees to the grid ([Boundaries] sec 5.4)
 //--------------------------------------------------------------------------
 // A 100 x 20 mm beam (L = 0.1 m, d = 0.02 m), plane strain, E = 1000 MPa,
 // nu = 0.3, small strain (formulation SS, sec 2), standard MPM (mpType 1),
@@ -44,7 +44,7 @@ namespace ample::ibcantilever {
 static const double L = 0.1, d = 0.02, strip = 0.002;  // beam (m); free-end strip (m)
 
 Params params() {
-  Params P = seed003Params(10, 10);  // 10 steps: 20 meet a cell-crossing mechanism (docs);
+  Params P = boundariesParams(10, 10);  // 10 steps: 20 meet a cell-crossing mechanism (docs);
                                      // 10 x 10 points per cell: the paper's 100
   P.push_back(Param("theta", 0).range(-360, 360)
                   .help("rotation of the whole model to the grid (degrees, anticlockwise, about the free end's lower "

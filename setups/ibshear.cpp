@@ -1,6 +1,6 @@
 //--------------------------------------------------------------------------
 // ibshear — simple shear of a body that a fixed implicit boundary holds anywhere in a
-//           cell (seed 003 sec 5.3, fig 16)
+//           cell ([Boundaries] sec 5.3, fig 16)
 //--------------------------------------------------------------------------
 // A 100 x 100 mm body (L = 0.1 m) in a grid of two 100 mm cells side by side
 // (2 x 1 cells, 0.2 x 0.1 m), from x = xA to xA + L. Its 20 x 20 standard MPM
@@ -31,7 +31,7 @@ namespace ample::ibshear {
 static const double L = 0.1;  // side of the body and of the cells (m)
 
 Params params() {
-  Params P = seed003Params(1, 20);
+  Params P = boundariesParams(1, 20);
   for (Param& p : P) {
     if (p.name == "mp") p.help("material points across the body in each direction (the paper: 20)");
     if (p.name == "lstps")  // the grid is one body high: the sheared points leave it after step 1

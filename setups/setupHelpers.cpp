@@ -234,11 +234,11 @@ Params ibParams() {
                     "1/2 (eqs 21, 26 as printed: shifts each boundary by 3 delta / 8)")};
 }
 
-Params seed003Params(int lstps, int mp) {
+Params boundariesParams(int lstps, int mp) {
   Params P = commonParams(lstps);
   setDefault(P, "tol", 1e-8);
   setDefault(P, "mp", mp);
-  setDefault(P, "mpType", 1);        // standard MPM (seed 003 sec 2)
+  setDefault(P, "mpType", 1);        // standard MPM ([Boundaries] sec 2)
   setDefault(P, "formulation", 3);   // SS: small strain, linear elastic (sec 2)
   setDefault(P, "E", 1e9);
   setDefault(P, "nu", 0.3);

@@ -1,11 +1,11 @@
 //--------------------------------------------------------------------------
 // setupHelpers — material point generation and boundary conditions for setups
 //--------------------------------------------------------------------------
-// Seed 002 sec 5.2 (fig 11): points are placed mp x mp per cell of a block of
+// [AMPLE] sec 5.2 (fig 11): points are placed mp x mp per cell of a block of
 // cells (detMpPos local positions mapped by shapefunc), cell by cell (x
 // fastest); each gets the domain half lengths h/(2 mp) (GIMP; 0 for MPM),
 // volume (h_x/mp)(h_y/mp) (unit thickness) and mass rho V.
-// fillPolygon (seed 003 sec 4, fig 4): the same points over the block, then
+// fillPolygon ([Boundaries] sec 4, fig 4): the same points over the block, then
 // each point's square domain is clipped by the solid polygon (clipPolygon):
 // wholly outside (less than 1e-12 of it inside): removed; wholly inside (more
 // than 1 - 1e-12): kept as fillBlock makes it; otherwise truncated: volume =
@@ -13,7 +13,7 @@
 // by sqrt(area fraction) (so 4 lp_x lp_y = V still) about the new position.
 // addBoundary: an implicit boundary (boundary.h) with one type for every
 // segment or one per segment, band width delta = deltaOverH h (h the smaller
-// spacing; seed 003: 1e-6), the solid on the left by default; returns it so
+// spacing; [Boundaries]: 1e-6), the solid on the left by default; returns it so
 // that a setup can set du. solidPolygon: the polygon round the solid, the
 // points of the boundaries in their order (a gap between two boundaries is a
 // free edge of the solid), so a setup lists them anticlockwise round it.
@@ -61,7 +61,7 @@ void fillCells(std::vector<MaterialPoint>& mpData, const Mesh& mesh, const Param
                int triPoints = 3);
 
 // the reactions of a set of nodes (frct: nDoF, as Analysis::frct): their vector sum and
-// the sum of their magnitudes, f = sum_n |(frct_x, frct_y)_n| (seed 001 sec 3.2, fig 7)
+// the sum of their magnitudes, f = sum_n |(frct_x, frct_y)_n| ([CPDI] sec 3.2, fig 7)
 struct Reaction {
   Vector2d sum = Vector2d::Zero();
   double magnitudes = 0;
@@ -83,10 +83,10 @@ Eigen::Matrix2d rotationDegrees(double theta);
 // the parameters of every setup with implicit boundaries: delta (band width / h, eq 16)
 // and ibK2 (the K2 coupling: 0 paper, 1 consistent); ibSettings applies ibK2 to an's boundaries
 Params ibParams();
-// commonParams(lstps) with the settings of seed 003's examples (sec 5): mp points per cell,
+// commonParams(lstps) with the settings of [Boundaries]'s examples (sec 5): mp points per cell,
 // standard MPM, small strain (SS), E = 1000 MPa, nu = 0.3, tol = 1e-8 (the IB residual
 // floor is ~2e-9 at delta = 1e-6 h), and ibParams
-Params seed003Params(int lstps, int mp);
+Params boundariesParams(int lstps, int mp);
 void ibSettings(Analysis& an, const Params& P);
 
 // the polygon round the solid: the points of the boundaries, in order

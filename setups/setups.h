@@ -1,7 +1,7 @@
 //--------------------------------------------------------------------------
 // setups.h — the analyses the program knows, their parameters, and the table
 //--------------------------------------------------------------------------
-// Seed 002 sec 4 (setupGrid). One problem = one file in setups/ with its
+// [AMPLE] sec 4 (setupGrid). One problem = one file in setups/ with its
 // parameter list and its setupGrid, plus one line in the table in
 // setups/setups.cpp. Every parameter can be set on the command line
 // (name=value); each carries its default, its valid range and a help line.

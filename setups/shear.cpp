@@ -1,5 +1,5 @@
 //--------------------------------------------------------------------------
-// shear — simple shear of a unit square (seed 000 sec 7.2)
+// shear — simple shear of a unit square ([Lagrangian] sec 7.2)
 //--------------------------------------------------------------------------
 // Unit square, h = 1 m / nels (0.125 m), mp x mp points per cell (3 x 3),
 // E = 10 kPa, nu = 0.3, no gravity; the top is sheared by dl = 6 m over 30
@@ -44,7 +44,7 @@ Params params() {
   setDefault(P, "domainUpdate", 5);  // FiiVol (eq 38): unchanged domains under simple shear
   for (Param& p : P)
     if (p.name == "domainUpdate")
-      p.help("GIMP domain update (seed 000 eqs 32-39); shear default FiiVol (eq 38); Uii (eq 34, "
+      p.help("GIMP domain update ([Lagrangian] eqs 32-39); shear default FiiVol (eq 38); Uii (eq 34, "
              "the default of the other setups) is the paper's failing case: error 0.86, stops in step 27");
   P.push_back(Param("prescribe", 1).choice(1, {"boundary", "all"})
                   .help("nodes given the shear: of the cells linked to the outer layer of points (the paper's, "

@@ -5,7 +5,7 @@
 // and on the left (x = 0, a symmetry line), the grid nodes on the top line
 // y = H moved down by `squash` x H / lstps per load step, the right side free;
 // square cells h = H / nels, mp x mp points per cell, small strain (SS,
-// seed 003 sec 2). The grid reaches `margin` cells past the right side, since
+// [Boundaries] sec 2). The grid reaches `margin` cells past the right side, since
 // the block grows sideways (a point that leaves the grid stops the run).
 // Analytic (plane strain, sigma_xx = 0, eps_yy = -squash):
 //   sigma_yy = E eps_yy / (1 - nu^2), eps_xx = -nu eps_yy / (1 - nu)

@@ -1,5 +1,5 @@
 //--------------------------------------------------------------------------
-// stretch — plane-strain stretch of a 2 x 2 von Mises block (seed 001 sec 3.1)
+// stretch — plane-strain stretch of a 2 x 2 von Mises block ([CPDI] sec 3.1)
 //--------------------------------------------------------------------------
 // E = 1000, nu = 0, rho_c = 400 (rhoY), 2 x 2 cells with mp x mp = 2 x 2
 // points each, rollers on the bottom and the left; the right side is pulled

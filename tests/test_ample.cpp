@@ -1,6 +1,6 @@
 // Tests of the main loop (ample.cpp) on the paper's problems: Newton-Raphson
 // convergence order, compaction convergence with refinement, collapse extents
-// of seed 002 table 5, and a patch test through the whole loop.
+// of [AMPLE] table 5, and a patch test through the whole loop.
 #include "ample/ample.h"
 #include "testProblems.h"
 #include <doctest/doctest.h>
@@ -24,7 +24,7 @@ double result(const std::string& name, const Analysis& an,
   return 0;
 }
 
-// Independent references (issue 10 item 7): written here from closed forms, sharing no
+// Independent references: written here from closed forms, sharing no
 // code with Hooke3d, VMconst, symLog or setups/homogeneous.cpp. Voigt order of the
 // stress [xx yy zz xy yz zx]; plane strain; Lame constants from E and nu.
 double lameLambda(double E, double nu) { return E * nu / ((1 + nu) * (1 - 2 * nu)); }
@@ -121,7 +121,7 @@ TEST_SUITE("ample") {
     CHECK(rate >= 0.9);
   }
 
-  TEST_CASE("ample: collapse GIMP 3x3 / h = 1 m matches seed 002 table 5 (13.781 / 6.194 m)") {
+  TEST_CASE("ample: collapse GIMP 3x3 / h = 1 m matches [AMPLE] table 5 (13.781 / 6.194 m)") {
     RunLog log;
     const std::vector<std::pair<std::string, double>> set = {{"a", 2}, {"mp", 3}};
     const Analysis an = runSetup("collapse", set, log);
@@ -136,7 +136,7 @@ TEST_SUITE("ample") {
     // ln(lambda_y) = rho_y / (E sqrt(2/3)) = 0.4899 (L = 3.264 m, in step 7); beyond it the
     // stress stays on the surface and tends to the plane-strain limit sqrt(2) rho_y
     for (int k = 1; k <= 6; ++k) CHECK(tx[k - 1] == doctest::Approx(1000 * std::log((2 + 0.2 * k) / 2)).epsilon(1e-12));
-    CHECK(tx[6] * 2 / 1.7 < tx[5] * 2 / 1.6);  // the reaction falls in step 7 (seed 001)
+    CHECK(tx[6] * 2 / 1.7 < tx[5] * 2 / 1.6);  // the reaction falls in step 7 ([CPDI])
     CHECK(tx[19] > 400 * std::sqrt(1.5));
     CHECK(tx[19] < 400 * std::sqrt(2.0));
     for (int t = 1; t <= 4; ++t) {
@@ -193,7 +193,7 @@ TEST_SUITE("ample") {
   }
 
   TEST_CASE("ample: simple shear on the paper's boundary cells gives the analytic stress at every point (MPM and CPDI2 / elastic and VM)") {
-    // Seed 000 sec 7.2 as printed: dl = 6 m over 30 steps, h = 0.125 m, 3 x 3 points;
+    // [Lagrangian] sec 7.2 as printed: dl = 6 m over 30 steps, h = 0.125 m, 3 x 3 points;
     // only the nodes of the cells holding the outer layer of points are sheared, the
     // interior nodes are solved for. The rows of points stay uniform, so the interior
     // nodes balance the homogeneous stress and every point must carry it. Without the
@@ -256,11 +256,11 @@ TEST_SUITE("ample") {
   }
 }
 
-// seed 000 table 8 prints the residuals of load step 10 of this collapse, pass 0 included:
+// [Lagrangian] table 8 prints the residuals of load step 10 of this collapse, pass 0 included:
 // 2.656e+00, 2.697e-04, 1.626e-09. Pass 0 is normalised by |fext| (frct is still 0), as in
 // the paper; only a step without loads (fext = 0) takes the last reactions instead
 TEST_SUITE("ample") {
-  TEST_CASE("ample: collapse 6x6 at h = 1 m reproduces the load step 10 residuals of seed 000 table 8") {
+  TEST_CASE("ample: collapse 6x6 at h = 1 m reproduces the load step 10 residuals of [Lagrangian] table 8") {
     const Setup* s = findSetup("collapse");
     Params P = s->params();
     setDefault(P, "mp", 6);

@@ -1,5 +1,5 @@
 // test_annulus.cpp — body forces given as a function of position (detBodyForce) and the
-// manufactured annulus of seed 000 sec 7.4 (setups/annulus.h, docs/annulus.md)
+// manufactured annulus of [Lagrangian] sec 7.4 (setups/annulus.h, docs/annulus.md)
 #include "ample/detExtForce.h"
 #include "setups/annulus.h"
 #include "testProblems.h"

@@ -1,4 +1,4 @@
-// Tests of the basis functions: SvpMPM, SvpGIMP (seed 002 eqs 23-26), MPMbasis
+// Tests of the basis functions: SvpMPM, SvpGIMP ([AMPLE] eqs 23-26), MPMbasis
 // (eq 22) and elemMPinfo: partition of unity, linear reproduction, gradients
 // against finite differences, continuity across the GIMP regions, GIMP = MPM
 // inside a cell. The points are built by hand on a grid from formCoord2D.

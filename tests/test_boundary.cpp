@@ -1,4 +1,4 @@
-// Tests of the implicit boundaries of seed 003 (issue 11, first parts): the boundary
+// Tests of the implicit boundaries of [Boundaries]: the boundary
 // data (ample/boundaries/boundary.h), the Dirichlet function of eq 16 and its band integrals
 // (dirichletBand), the cut cells (cutCells), the polygon clip (clipPolygon) and the
 // point generation of sec 4 (fillPolygon, addBoundary, solidPolygon in setupHelpers).
@@ -98,7 +98,7 @@ TEST_SUITE("dirichletBand") {
       CHECK(near(dirichletD(r.phi, delta), r.d, 1e-15));
       CHECK(near(dirichletDPrime(r.phi, delta), r.dp, 1e-14));
     }
-    // the default band of seed 003: delta = 1e-6 h, h = 10 mm; half way: d = 3/4, d' = 1/delta
+    // the default band of [Boundaries]: delta = 1e-6 h, h = 10 mm; half way: d = 3/4, d' = 1/delta
     const double dh = 1e-6 * 0.01;
     CHECK(near(dirichletD(0.5 * dh, dh), 0.75, 1e-12));
     CHECK(near(dirichletDPrime(0.5 * dh, dh) * dh, 1.0, 1e-12));

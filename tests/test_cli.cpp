@@ -149,7 +149,7 @@ TEST_SUITE("cli") {
     CHECK(get(n.params, "mpType") == 4);  // values may be given by name
     CHECK(get(n.params, "formulation") == 2);
     CHECK(get(n.params, "domainUpdate") == 4);
-    CHECK(get(parseArgs({"compaction", "formulation=SS"}).params, "formulation") == 3);  // seed 003
+    CHECK(get(parseArgs({"compaction", "formulation=SS"}).params, "formulation") == 3);  // [Boundaries]
   }
 
   TEST_CASE("cli: bad input is refused with a message naming the parameter and range") {

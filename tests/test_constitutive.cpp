@@ -1,4 +1,4 @@
-// Tests of the constitutive models: Hooke3d (seed 002 eq 5) and VMconst
+// Tests of the constitutive models: Hooke3d ([AMPLE] eq 5) and VMconst
 // (eq 11, backward-Euler radial return and its algorithmic tangent).
 // Voigt order [xx yy zz xy yz zx], strains with engineering shear.
 #include "constitutive/Hooke3d.h"

@@ -1,4 +1,4 @@
-// Tests of the CPDI basis functions (seed 001 sec 2 (iv)): SvpCPDI1, SvpCPDI2,
+// Tests of the CPDI basis functions ([CPDI] sec 2 (iv)): SvpCPDI1, SvpCPDI2,
 // cpdi2Weights, and CPDI points through MPMbasis / elemMPinfo. The reference
 // values are computed independently here: the grid hat functions by hand and
 // the domain averages by 3 x 3 Gauss quadrature of the isoparametric map of the

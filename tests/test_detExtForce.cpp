@@ -1,4 +1,4 @@
-// Tests of detExtForce (seed 002 eqs 27-28, 32): f_ext = sum_p S_vp (m_p {0,-g} + f_p).
+// Tests of detExtForce ([AMPLE] eqs 27-28, 32): f_ext = sum_p S_vp (m_p {0,-g} + f_p).
 // The points are made by hand (nodes, basis values, mass, point force), so only
 // detExtForce itself is exercised.
 #include "ample/detExtForce.h"

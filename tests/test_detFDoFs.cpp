@@ -1,7 +1,7 @@
-// Tests of detFDoFs (seed 002 sec 4, sec 5.3): the free degrees of freedom are
+// Tests of detFDoFs ([AMPLE] sec 4, sec 5.3): the free degrees of freedom are
 // those of the nodes of active cells, less the constrained ones, ascending.
 // With the points (the analysis): the nodes linked to a point, less the redundant
-// dofs of nodes that only one CPDI corner reaches (issue 10 item 3), the redundant
+// dofs of nodes that only one CPDI corner reaches, the redundant
 // lone nodes of a GIMP point alone in a row of cells (Kt(fd,fd) of full rank, the
 // same on one and two threads), and the
 // elemMPinfo rule that a node with zero basis value and gradient is not linked.
@@ -171,7 +171,7 @@ TEST_SUITE("detFDoFs") {
     // (dSx_v Sy, Sx_v dSy): the point sees their u only through sum Sx_v u_v and
     // sum dSx_v u_v, one zero-energy mode per direction (Kt singular in exact
     // arithmetic: an LU finds a zero or a round-off pivot, by the summation order).
-    // Sx = 0.0225, 0.855, 0.1225 (seed 002 eqs 25-26, regions A, C, E): node (1,4) goes.
+    // Sx = 0.0225, 0.855, 0.1225 ([AMPLE] eqs 25-26, regions A, C, E): node (1,4) goes.
     // The other top points' domains end exactly on y = 3 and x = 3: they link no
     // node of row y = 4 or column x = 4 (elemForMP: touching is not overlapping).
     Analysis an = testing::smallBlock(MpType::GIMP, CmType::Elastic, 2);
@@ -220,7 +220,7 @@ TEST_SUITE("detFDoFs") {
 
 TEST_SUITE("detFDoFs") {
   TEST_CASE("detFDoFs: the default collapse at the start of load step 34: a lone point's row, Kt(fd,fd) of full rank") {
-    // seed 002 sec 5.3, a = 2, mp = 3 (h = 1 m, lp = 1/6 m): after step 33 the GIMP
+    // [AMPLE] sec 5.3, a = 2, mp = 3 (h = 1 m, lp = 1/6 m): after step 33 the GIMP
     // point at (7.885, 6.938) pokes 0.10 h into the empty row y in [7, 8] across x = 8,
     // so three nodes of y = 8 are linked to it alone: the linked dofs carry two
     // zero-energy modes (pivots of round-off); detFDoFs leaves one dof per direction

@@ -38,7 +38,7 @@ TEST_SUITE("detMPs") {
           }
         }
         CHECK(testing::tangentError(an, uvw, Formulation::UL) < 1e-6);
-        // PC (seed 000 sec 5): the stress paired with dS/dX~ is P~, not symmetric, so
+        // PC ([Lagrangian] sec 5): the stress paired with dS/dX~ is P~, not symmetric, so
         // eq 16 must contract its second index with the gradient
         CHECK(testing::tangentError(an, uvw, Formulation::PC) < 1e-6);
       }

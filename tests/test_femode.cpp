@@ -1,5 +1,5 @@
 // Tests of the finite element mode (Analysis::fem, moveMesh), fillCells, reactionOver
-// and the doughnut setup (seed 001 sec 3.2). References independent of the code: the
+// and the doughnut setup ([CPDI] sec 3.2). References independent of the code: the
 // closed-form Hencky stress and the exact nodal positions of a uniform stretch, a
 // hand-summed reaction, MPM with the same points (a single step must agree exactly),
 // equilibrium (the reactions of all supported nodes sum to zero without body force).
@@ -183,7 +183,7 @@ TEST_SUITE("doughnut") {
     CHECK(reactionOver(fe.frct, all).sum.norm() <= 1e-9 * f);       // no body force: sum zero
     CHECK(reactionOver(fe.frct, inner).sum.norm() <= 1e-9 * f);     // 20-degree symmetry of the circle
   }
-  // the paper's fig 8 (seed 001): FE rises with the twist (mesh distortion) while MPM
+  // the paper's fig 8 ([CPDI]): FE rises with the twist (mesh distortion) while MPM
   // and CPDI fall after yield; here the invariants: each FE Gauss point keeps its local
   // coordinates (+-1/sqrt 3) in its cell however the cell distorts (measured 3e-15;
   // cells turn non-convex on the way: the search's edge test would lose their points,

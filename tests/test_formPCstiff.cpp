@@ -1,4 +1,4 @@
-// Tests of formPCstiff (seed 000 appendix A.2), the consistent tangent of the
+// Tests of formPCstiff ([Lagrangian] appendix A.2), the consistent tangent of the
 // previously converged (PC) formulation: at the material level against central
 // differences of P~(dF) = tau dF^-T / Jn, and assembled by detMPs(..., PC)
 // against central differences of the PC internal force. PC and UL describe the
@@ -64,7 +64,7 @@ PCState pcStress(const Matrix3d& dF, const Matrix3d& bEn, double Jn, CmType cm,
   return s;
 }
 
-// the standard-MPM beam at h = 0.5 m (issue 10 item 1) run to its end with formulation f
+// the standard-MPM beam at h = 0.5 m run to its end with formulation f
 Analysis mpmBeam(Formulation f, const std::vector<std::pair<std::string, double>>& set) {
   const Setup* s = findSetup("beam");
   Params P = s->params();
@@ -193,7 +193,7 @@ TEST_SUITE("formPCstiff") {
   }
 }
 
-// Issue 10 item 1: with standard MPM the 6x6 beam stops in load step 11 (h = 0.5 m) with PC
+// With standard MPM the 6x6 beam stops in load step 11 (h = 0.5 m) with PC
 // and in step 7 (h = 0.25 m) while UL completes. PC is not at fault: PC and UL give the same
 // fint and Kt at every iterate. In load step 11 (h = 0.5 m) a point at the free tip's corner
 // is the only point on two nodes of its cell; equilibrium of those two nodes makes its stress

@@ -1,4 +1,4 @@
-// Tests of formULstiff (seed 000 appendix A.1, eqs A.1-A.2): the derivative of
+// Tests of formULstiff ([Lagrangian] appendix A.1, eqs A.1-A.2): the derivative of
 // the matrix logarithm dLogdB against central differences of symLog (distinct,
 // repeated and nearly repeated eigenvalues) and analytic limits of the spatial
 // tangent a_ijkl at F = I. Tensors are 9x9 matrices, pair (i,j) -> 3i + j.

@@ -119,7 +119,7 @@ TEST_SUITE("elemForMP") {
   TEST_CASE("elemForMP: an MPM point within round-off of a cell edge belongs to the cell to the left / below") {
     // a position that should sit on x = 2 carries round-off of either sign (after
     // simple shear x = X + gamma Y lands on grid lines): both sides must give the same
-    // cell, or a row of points is split 4 / 2 between two cells (seed 000 sec 7.2)
+    // cell, or a row of points is split 4 / 2 between two cells ([Lagrangian] sec 7.2)
     const Mesh m = formCoord2D(4, 4, 4.0, 4.0);
     CHECK(cellsOf(m, Vector2d(2.0 + 4e-16, 1.5), Vector2d::Zero()) == std::vector<int>{5});
     CHECK(cellsOf(m, Vector2d(2.0 - 4e-16, 1.5), Vector2d::Zero()) == std::vector<int>{5});

@@ -1,4 +1,4 @@
-// Tests of the setup ibcantilever (seed 003 sec 5.4): a 100 x 20 mm plane-strain cantilever
+// Tests of the setup ibcantilever ([Boundaries] sec 5.4): a 100 x 20 mm plane-strain cantilever
 // fixed at one end by an implicit boundary, under a body force across the beam, at a small
 // size (h = 4 mm, 5 x 5 points per cell: ~0.1 s a run). Checks:
 //  - 0 and 90 degrees are the same discretisation (the model turned about a grid node, the

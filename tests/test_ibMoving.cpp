@@ -1,4 +1,4 @@
-// Tests of the moving and curved implicit boundaries of seed 003 secs 5.5-5.6:
+// Tests of the moving and curved implicit boundaries of [Boundaries] secs 5.5-5.6:
 // setups footing (a Prescribed segment pushed through the grid) and funnel
 // (curved rollers, a PrescribedNormal edge). References: linearity of the small
 // strain problem, the prescribed values read back from the nodal field by a

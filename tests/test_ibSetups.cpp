@@ -1,4 +1,4 @@
-// Tests of the setups deepbeam (seed 003 sec 5.2) and ibshear (sec 5.3). deepbeam's FE
+// Tests of the setups deepbeam ([Boundaries] sec 5.2) and ibshear (sec 5.3). deepbeam's FE
 // reference against a bilinear finite element program written here (Q4 cells, 2 x 2 Gauss,
 // plane strain, nodal fixity; it shares no code with the library) and against the weight of
 // the body; the IB runs against the paper's table III value and the 1/mp^2 convergence of

@@ -1,4 +1,4 @@
-// Tests of the implicit-boundary stiffness of seed 003 (ample/boundaries/ibStiffness): K2 + K2' + K3
+// Tests of the implicit-boundary stiffness of [Boundaries] (ample/boundaries/ibStiffness): K2 + K2' + K3
 // of one cut cell against a direct integration written here from eq 17 and eq 18, the
 // inclined roller against the aligned one (eqs 23-24) in rotated axes (eq 25), and the
 // setup ibblock (sec 5.1) against the grid-aligned solution with nodal rollers and

@@ -1,4 +1,4 @@
-// Tests of linSolve (seed 002 eq 29): skipped at NRit 0, prescribed
+// Tests of linSolve ([AMPLE] eq 29): skipped at NRit 0, prescribed
 // increments at NRit 1 only, equilibrium of the free dofs, reactions, dofs
 // that are neither free nor prescribed left at zero, a singular system refused;
 // each solver= of the build (solverChoice.h) against SparseLU, and the refusal of

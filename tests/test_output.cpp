@@ -256,7 +256,7 @@ std::vector<double> vtkBlock(const std::string& vtk, const std::string& key, int
 }
 }  // namespace
 
-// issue 10 item 6: the grid of each output step with its nodal displacements, as AMPLE
+// the grid of each output step with its nodal displacements, as AMPLE
 // writes it; a grid that moves (the stretch) as it is in that step; all six stresses and
 // the displacement components of the points as scalars
 TEST_SUITE("output") {
@@ -287,7 +287,7 @@ TEST_SUITE("output") {
   }
 }
 
-// issue 10 item 6: at pass 0 the reactions of the step are not known; with fext = 0 (a
+// at pass 0 the reactions of the step are not known; with fext = 0 (a
 // displacement-driven step) eq 35 divided by |0 + 0| + eps: 5.4e17 at step 7 of the stretch
 TEST_SUITE("output") {
   TEST_CASE("output: the pass-0 residual of a displacement-driven step is of order one") {
@@ -306,7 +306,7 @@ TEST_SUITE("output") {
   }
 }
 
-// issue 14: --vtk-format binary. Both formats of the same run are read by one reader written
+// --vtk-format binary. Both formats of the same run are read by one reader written
 // here from the legacy format (VTK file formats, "Simple Legacy Formats"): four header lines,
 // then keyword lines, each followed by its numbers: in ASCII as text, in BINARY as big-endian
 // 4-byte IEEE floats / int32 with one "\n" after the block.

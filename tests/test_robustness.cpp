@@ -1,4 +1,4 @@
-// Tests of the failure paths of the main loop (issue 6): a NaN names the load step, the
+// Tests of the failure paths of the main loop: a NaN names the load step, the
 // pass and the first bad point; a failed load step can be rescued by sub-division.
 #include "ample/ample.h"
 #include "ample/errors.h"
@@ -90,7 +90,7 @@ Analysis runAll(const std::string& name, const std::vector<std::pair<std::string
 }  // namespace
 
 TEST_SUITE("robustness") {
-  // issue 10 item 4: the penalty used to be on in every load step, where it pins the
+  // the penalty used to be on in every load step, where it pins the
   // nearly free nodes of nearly empty cells (stiffness ~1e-12 E): gamma = 1e-12 moved the
   // collapse toe by 1.3e-4 m and stopped the default beam in step 16. Now it is only
   // switched on by a load step that fails without it
@@ -205,7 +205,7 @@ TEST_SUITE("stress") {
 
   TEST_CASE("stress: cell crossing in standard MPM compaction gives finite stresses and the known error") {
     // the known eq 37 errors of standard MPM at these refinements (ample compaction mpType=1
-    // nelsy=N mp=M, measured when this test was written; seed 002 fig 9: no convergence).
+    // nelsy=N mp=M, measured when this test was written; [AMPLE] fig 9: no convergence).
     // With 1 point per cell, from nelsy = 64 on an emptied cell stops the run at the step
     // given: the error then mostly measures the load not yet applied, 0.5 (1 - lf) at the
     // load factor lf = step / 40, plus at most lf times the error of a complete run
@@ -292,16 +292,16 @@ std::string tryAll(const std::string& name, const std::vector<std::pair<std::str
 }  // namespace
 
 TEST_SUITE("stress") {
-  // issue 10 item 3: a CPDI corner entering an empty cell, alone, linked nodes with a
+  // a CPDI corner entering an empty cell, alone, linked nodes with a
   // zero column (corner on the far cell edge) or two or more nodes whose gradients
   // are parallel (a null mode): "structurally singular" / "singular" stops before.
   // Asserted: every load step converges, stresses finite, and extent / height within
-  // 0.5 % / 2.5 % (h = 1 m) or 3 % / 5 % (h = 2 m and 0.5 m) of seed 002 table 5,
+  // 0.5 % / 2.5 % (h = 1 m) or 3 % / 5 % (h = 2 m and 0.5 m) of [AMPLE] table 5,
   // 13.781 / 6.194 (GIMP h = 1 m 3 x 3; CPDI heights, from the domain bounding box,
   // are 0.05-0.1 m above GIMP's). Not here: CPDI1 at h = 2 m with 2 x 2 and 3 x 3
   // points, which does not converge in step 37 / 40 (a weakly reached node on the
-  // top of the grid, see issue 10), with or without sub-division.
-  TEST_CASE("stress: CPDI1 and CPDI2 collapses at h = 2 / 1 / 0.5 m complete near seed 002 table 5") {
+  // top of the grid), with or without sub-division.
+  TEST_CASE("stress: CPDI1 and CPDI2 collapses at h = 2 / 1 / 0.5 m complete near [AMPLE] table 5") {
     struct Case { MpType t; int a, mp; };
     const Case cases[] = {{MpType::CPDI2, 1, 3}, {MpType::CPDI2, 2, 2}, {MpType::CPDI2, 2, 3},
                           {MpType::CPDI2, 2, 4}, {MpType::CPDI2, 4, 6}, {MpType::CPDI1, 1, 4},
@@ -343,9 +343,9 @@ TEST_SUITE("stress") {
   }
 }
 
-// issue 10 item 6: a step that stops with the residual still falling fast says that more
+// a step that stops with the residual still falling fast says that more
 // passes may converge (the MPM collapse at h = 2 m: fErr 5.4e-8 after 10 passes, and
-// seed 000 table 6 completes it with more passes)
+// [Lagrangian] table 6 completes it with more passes)
 TEST_SUITE("robustness") {
   TEST_CASE("robustness: a step stopped while its residual still falls names NRitMax in the message") {
     try {

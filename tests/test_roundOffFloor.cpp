@@ -180,7 +180,7 @@ TEST_SUITE("roundOffFloor") {
   }
 }
 
-// the case of issue 14: the paper's default tol = 1e-9 fails in load step 1 of the 2^16-cell
+// the 2^16-cell compaction: the paper's default tol = 1e-9 fails in load step 1 of the 2^16-cell
 // column; about 10 s (label long: ctest -LE long leaves it out)
 TEST_SUITE("long") {
   TEST_CASE("roundOffFloor: compaction nelsy=65536 fails at the default tol at its floor / and tol=1e-8 passes step 1") {

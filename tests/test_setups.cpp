@@ -1,5 +1,5 @@
 // Tests of the setups' reported results against values that share no code with them
-// (issue 10 item 7): the compaction error of eq 37 and the analytic stress of eq 36
+// the compaction error of eq 37 and the analytic stress of eq 36
 // (setups/compaction.cpp results()), by hand and by an independent calculation.
 #include "ample/ample.h"
 #include "testProblems.h"

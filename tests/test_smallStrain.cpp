@@ -1,8 +1,8 @@
-// Tests of the small-strain formulation (formulation = SS, seed 003 sec 2, eqs 2-3 and
+// Tests of the small-strain formulation (formulation = SS, [Boundaries] sec 2, eqs 2-3 and
 // 6-11) in detMPs and through the whole loop: the tangent against central differences,
 // the hand formula of linear elasticity for a homogeneous strain, the state kept by
 // updateMPs and restoreConverged, one Newton pass on a linear problem, the approach to
-// UL as the load goes to zero, and the compaction column against seed 002 eq 36.
+// UL as the load goes to zero, and the compaction column against [AMPLE] eq 36.
 // The expected stresses are written here from Lame constants (not with Hooke3d).
 #include "ample/ample.h"
 #include "ample/detMPs.h"

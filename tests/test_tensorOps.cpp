@@ -1,5 +1,5 @@
 // Tests of tensorOps: Voigt <-> tensor round trips, exponential and logarithm
-// of symmetric tensors (seed 002 eqs 9-10).
+// of symmetric tensors ([AMPLE] eqs 9-10).
 #include "ample/stiffness/tensorOps.h"
 #include <doctest/doctest.h>
 #include <cmath>

@@ -1,6 +1,6 @@
-// Tests of updateDomain: the suitability pattern of seed 000 table 2 for the
+// Tests of updateDomain: the suitability pattern of [Lagrangian] table 2 for the
 // GIMP domain updates (eqs 32-39) under four homogeneous deformation modes, and
-// the CPDI1 / CPDI2 domain updates (seed 001 sec 2 (vii)). A domain update is
+// the CPDI1 / CPDI2 domain updates ([CPDI] sec 2 (vii)). A domain update is
 // "correct" when the domain area 4 lx ly equals det(F) V0 and, for the stretch
 // and hydrostatic modes, when the half lengths equal l0 times the stretches.
 #include "ample/basis/domainCorners.h"
@@ -169,7 +169,7 @@ TEST_SUITE("updateDomain") {
   }
 
   // Hand calculations of every GIMP update: l0 = (0.1, 0.05), homogeneous fields.
-  // The expected half lengths are written out from the equations of seed 000 sec 6.4;
+  // The expected half lengths are written out from the equations of [Lagrangian] sec 6.4;
   // nothing below calls the library to make them (no stretchTensor, no det).
   TEST_CASE("updateDomain: hand calculation - pure stretch F = diag(1.2 0.9) for every method") {
     Eigen::Matrix2d F;

@@ -1,4 +1,4 @@
-// Tests of updateMPs (seed 002 sec 3.4, eqs 15, 33, 34) and of stretchTensor.
+// Tests of updateMPs ([AMPLE] sec 3.4, eqs 15, 33, 34) and of stretchTensor.
 // The points are made by hand on a single 1 m cell (nodes 0-3, basis values,
 // F), so only updateMPs itself is exercised; domains use the default
 // DomainUpdate::Uii (eq 34). The other domain updates: tests/test_updateDomain.cpp.

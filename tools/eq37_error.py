@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""eq37_error.py — the compaction error of seed 002 eq 37 from a run's mp_final.csv,
+"""eq37_error.py — the compaction error of [AMPLE] eq 37 from a run's mp_final.csv,
 written independently of the C++ code: the reference values pinned in
 tests/test_setups.cpp ("compaction: eq 37 at E = 10 kPa ...") come from
 

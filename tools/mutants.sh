@@ -29,7 +29,7 @@ set -u
 
 # name | file | sed expression (extended regex, | is not used inside)
 MUTANTS=(
-  # issue 10 item 7: the seven that survived the review
+  # the seven that once survived review
   "compaction-vp|setups/compaction.cpp|s/\* mp\.vp0;/* mp.vp;/"
   "vtk-vm-no-2|plotting/makeVtkMP.cpp|s/\+ 2 \* mp\.sig\.tail<3>\(\)/+ mp.sig.tail<3>()/"
   "vtk-szz-sxy-swap|plotting/makeVtkMP.cpp|s/\"sigma_zz\", \"sigma_xy\"/\"sigma_xy\", \"sigma_zz\"/"
@@ -44,7 +44,7 @@ MUTANTS=(
   "uii-as-fii|ample/basis/updateDomain.cpp|s/Vector2d\(U\(0, 0\), U\(1, 1\)\)/Vector2d(F(0, 0), F(1, 1))/"
   "eq35-denominator|ample/ample.cpp|s/\(\(fext \+ r\)\.array\(\)/((fext).array()/"
   "hooke-shear-G|constitutive/Hooke3d.cpp|s/E \/ \(2\.0 \* \(1\.0 \+ nu\)\)/E \/ (1.0 + nu)/"
-  # issue 11: implicit boundaries (tests/test_boundary.cpp)
+  # implicit boundaries (tests/test_boundary.cpp)
   "eq16-slope-no-2|ample/boundaries/dirichletBand.cpp|s/return 2\.0 \/ delta \* \(1\.0 - phi \/ delta\);/return 1.0 \/ delta * (1.0 - phi \/ delta);/"
   "ib-centroid-not-moved|setups/setupHelpers.cpp|s/blockPoint\(x \+ in\.centroid, /blockPoint(x, /"
   "cutcells-wrong-side|ample/boundaries/cutCells.cpp|s/\(n\(k\) > 0 \? 0 : 1\)/(n(k) > 0 ? 1 : 0)/"
@@ -57,7 +57,7 @@ MUTANTS=(
   "ib-curve-normal-ignored|ample/boundaries/boundary.h|s/if \(b\.curveNormal\.empty\(\)\) return inwardNormal\(b, s\);/return inwardNormal(b, s);/"
   "ib-force-sign|ample/boundaries/ibStiffness.cpp|s/r = t\.f - t\.k \* ue;/r = t.k * ue - t.f;/"
   "ib-empty-prescribed-silent|ample/boundaries/ibStiffness.cpp|s/      throw RunError\(\"implicit boundary \"/      if (false) throw RunError(\"implicit boundary \"/"
-  # formulation=SS (seed 003): grad du as (I + grad du) - I; the volume of the moved configuration
+  # formulation=SS ([Boundaries]): grad du as (I + grad du) - I; the volume of the moved configuration
   "ss-grad-via-dF|ample/detMPs.cpp|s/plusGradDu\(Matrix3d::Zero\(\), uvw, mp\), mp\)/plusGradDu(Matrix3d::Identity(), uvw, mp) - Matrix3d::Identity(), mp)/"
   "ss-volume-dF|ample/detMPs.cpp|s/t\.Vp = mp\.vp; +\/\/ V_p = V_p0/t.Vp = (Matrix3d::Identity() + H).determinant() * mp.vp;/"
 )

@@ -1,7 +1,7 @@
 //--------------------------------------------------------------------------
 // MPMbasis — two-dimensional basis functions and gradients of one point
 //--------------------------------------------------------------------------
-// Seed 002 eq 22. See MPMbasis.h for inputs and outputs.
+// [AMPLE] eq 22. See MPMbasis.h for inputs and outputs.
 //--------------------------------------------------------------------------
 #include "MPMbasis.h"
 #include "SvpCPDI.h"
@@ -13,7 +13,7 @@
 
 namespace ample {
 
-// ---- the regular grid (seed 002) ----------------------------------------
+// ---- the regular grid ([AMPLE]) ----------------------------------------
 
 // the bi-linear basis of a grid node, the product of SvpMPM in x and y
 double gridBasis(const Mesh& mesh, int node, const Vector2d& x) {

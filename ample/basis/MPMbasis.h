@@ -1,10 +1,10 @@
 //--------------------------------------------------------------------------
 // MPMbasis — two-dimensional basis functions and gradients of one point
 //--------------------------------------------------------------------------
-// Seed 002 eq 22 and footnote 3: S(X,Y) = S(X) S(Y),
+// [AMPLE] eq 22 and footnote 3: S(X,Y) = S(X) S(Y),
 // dS/dX = dS(X) S(Y), dS/dY = S(X) dS(Y), from SvpMPM (mpType 1, eqs 23-24)
 // or SvpGIMP (mpType 2, eqs 25-26) in each direction. CPDI1/CPDI2 (mpType 3/4,
-// seed 001 sec 2 (iv)): SvpCPDI from the grid basis at the domain corners.
+// [CPDI] sec 2 (iv)): SvpCPDI from the grid basis at the domain corners.
 // MPMbasis is the regular grid's; meshMPMbasis the same on a general mesh
 // (docs/meshes.md): MPM from the cell basis of the point's cell (cellBasis:
 // barycentric / inverse isoparametric map, grad N = J^-T dN/dxi); CPDI from the

@@ -1,7 +1,7 @@
 //--------------------------------------------------------------------------
 // SvpCPDI — CPDI1 and CPDI2 basis functions and gradients of one node
 //--------------------------------------------------------------------------
-// Seed 001 sec 2 (iv). See SvpCPDI.h for the formulas, inputs and outputs.
+// [CPDI] sec 2 (iv). See SvpCPDI.h for the formulas, inputs and outputs.
 //--------------------------------------------------------------------------
 #include "SvpCPDI.h"
 #include "ample/classroom/exercise.h"

@@ -1,7 +1,7 @@
 //--------------------------------------------------------------------------
 // SvpCPDI — CPDI1 and CPDI2 basis functions and gradients of one node
 //--------------------------------------------------------------------------
-// Seed 001 sec 2 (iv). Sc(c) is the grid (bi-linear) basis function of the
+// [CPDI] sec 2 (iv). Sc(c) is the grid (bi-linear) basis function of the
 // node evaluated at domain corner c (anticlockwise from the lower-left).
 // CPDI1 (parallelogram spanned by s, t, area V = |s x t|):
 //   S  = (Sc1 + Sc2 + Sc3 + Sc4)/4
@@ -10,7 +10,7 @@
 // average of the bi-linear interpolant S^ of the corner values. With the
 // isoparametric map, det J = J0 + J1 xi + J2 eta, V = 4 J0, this gives the
 // weights w_c = 1/4 + (J1 xi_c + J2 eta_c)/(12 J0) — derived here, not copied
-// from the original CPDI2 paper, whose printed weights were wrong (seed 000,
+// from the original CPDI2 paper, whose printed weights were wrong ([Lagrangian],
 // footnote 6). The gradient is the domain average of grad S^ (divergence form):
 //   dS = 1/(2V) {Sc1 [y2 - y4; x4 - x2] + Sc2 [y3 - y1; x1 - x3]
 //               + Sc3 [y4 - y2; x2 - x4] + Sc4 [y1 - y3; x3 - x1]}

@@ -1,7 +1,7 @@
 //--------------------------------------------------------------------------
 // SvpGIMP — one-dimensional GIMP basis function and its gradient
 //--------------------------------------------------------------------------
-// Seed 002 eqs 25-26. See SvpGIMP.h for the regions, inputs and outputs.
+// [AMPLE] eqs 25-26. See SvpGIMP.h for the regions, inputs and outputs.
 //--------------------------------------------------------------------------
 #include "SvpGIMP.h"
 #include "ample/classroom/exercise.h"

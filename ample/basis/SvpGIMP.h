@@ -1,7 +1,7 @@
 //--------------------------------------------------------------------------
 // SvpGIMP — one-dimensional GIMP basis function and its gradient
 //--------------------------------------------------------------------------
-// Seed 002 eqs 25-26, the five regions A-E of fig 2 (d = X~p - X~v, l = lp):
+// [AMPLE] eqs 25-26, the five regions A-E of fig 2 (d = X~p - X~v, l = lp):
 //   A  -h-l < d <= -h+l : S = (h+l+d)^2/(4hl)          dS = (h+l+d)/(2hl)
 //   B  -h+l < d <= -l   : S = 1 + d/h                  dS = 1/h
 //   C    -l < d <= l    : S = 1 - (d^2+l^2)/(2hl)      dS = -d/(hl)

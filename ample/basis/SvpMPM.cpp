@@ -1,7 +1,7 @@
 //--------------------------------------------------------------------------
 // SvpMPM — one-dimensional standard MPM basis function and its gradient
 //--------------------------------------------------------------------------
-// Seed 002 eqs 23-24. See SvpMPM.h for inputs and outputs.
+// [AMPLE] eqs 23-24. See SvpMPM.h for inputs and outputs.
 //--------------------------------------------------------------------------
 #include "SvpMPM.h"
 #include "ample/classroom/exercise.h"

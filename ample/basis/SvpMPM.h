@@ -1,7 +1,7 @@
 //--------------------------------------------------------------------------
 // SvpMPM — one-dimensional standard MPM basis function and its gradient
 //--------------------------------------------------------------------------
-// Seed 002 eqs 23-24: with d = X~p - X~v,
+// [AMPLE] eqs 23-24: with d = X~p - X~v,
 //   S = 1 + d/h, dS = 1/h   for -h < d <= 0
 //   S = 1 - d/h, dS = -1/h  for  0 < d <= h,   and 0 elsewhere.
 // Inputs:  d (point minus node position) · h (grid spacing)

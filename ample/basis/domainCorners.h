@@ -2,7 +2,7 @@
 // domainCorners — the four corners of a material point's domain
 //--------------------------------------------------------------------------
 // Anticlockwise from the lower-left one. GIMP: the rectangle x_p +- l_p;
-// CPDI1: the parallelogram x_p + [-1 1 1 -1] s/2 + [-1 -1 1 1] t/2 (seed 001
+// CPDI1: the parallelogram x_p + [-1 1 1 -1] s/2 + [-1 -1 1 1] t/2 ([CPDI]
 // sec 2 (iii)); CPDI2: the stored corners; MPM: the point itself, four times.
 // Inputs:  mp (mpType, mpC, lp, st, xc)
 // Outputs: corners (2 x 4), column c is corner c

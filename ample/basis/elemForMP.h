@@ -1,7 +1,7 @@
 //--------------------------------------------------------------------------
 // elemForMP — background grid cells overlapped by a material point's domain
 //--------------------------------------------------------------------------
-// Seed 002 table 1. A cell belongs to the point when it overlaps the domain
+// [AMPLE] table 1. A cell belongs to the point when it overlaps the domain
 // [x_p - l_p, x_p + l_p] in every direction with positive length (a cell that
 // only touches the domain edge carries zero basis functions and is left out;
 // "touching" allows a round-off of 1e-9 h). A standard MPM point (l_p = 0)

@@ -1,7 +1,7 @@
 //--------------------------------------------------------------------------
 // nodesForMP — unique list of the nodes of the cells linked to a point
 //--------------------------------------------------------------------------
-// Seed 002 table 1.
+// [AMPLE] table 1.
 // Inputs:  etpl (nels x 4, or x 3 for triangles) · eIN (ne cells)
 // Outputs: nIN (nodes, ascending) · number of nodes nn
 // Tests:   tests/test_grid.cpp

@@ -1,7 +1,7 @@
 //--------------------------------------------------------------------------
 // updateDomain — material point domain at the end of a load step
 //--------------------------------------------------------------------------
-// Seed 000 eqs 32-39, seed 001 sec 2 (vii). See updateDomain.h.
+// [Lagrangian] eqs 32-39, [CPDI] sec 2 (vii). See updateDomain.h.
 //--------------------------------------------------------------------------
 #include "updateDomain.h"
 #include "MPMbasis.h"
@@ -11,7 +11,7 @@
 
 namespace ample {
 
-// corners moved with the grid displacement (seed 000 eq 35, CPDI2)
+// corners moved with the grid displacement ([Lagrangian] eq 35, CPDI2)
 static Corners moveCorners(const Mesh& mesh, const Eigen::VectorXd& uvw, const MaterialPoint& mp,
                            Corners x) {
   const CornerBasis S = cornerBasis(mesh, mp, x);

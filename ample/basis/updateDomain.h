@@ -1,7 +1,7 @@
 //--------------------------------------------------------------------------
 // updateDomain — material point domain at the end of a load step
 //--------------------------------------------------------------------------
-// GIMP half lengths l_p by the chosen method (seed 000 sec 6.4, table 2):
+// GIMP half lengths l_p by the chosen method ([Lagrangian] sec 6.4, table 2):
 //   None       l = l0
 //   DetF       l_i = l0_i det(F)^(1/nD)                               (eq 32)
 //   Fii        l_i = l0_i |F_ii|                                      (eq 33)
@@ -11,7 +11,7 @@
 //   FiiVol     l_i = l0_i |F_ii| (det F / prod_j |F_jj|)^(1/nD)          (eq 38)
 //   FiiVolInc  l_i = ln_i |dF_ii| (det dF / prod_j |dF_jj|)^(1/nD), dF = F Fn^-1 (eq 39)
 // CPDI1: s = F s0, t = F t0; CPDI2: corners moved by the grid basis, x_c +=
-// sum_v N_v(x_c) du_v (seed 001 sec 2 (vii)), volume = area of the corners;
+// sum_v N_v(x_c) du_v ([CPDI] sec 2 (vii)), volume = area of the corners;
 // for CPDI lp is set to half the bounding box of the domain (output only).
 // Standard MPM points have no domain and are left alone.
 // Called before the point moves: corners are taken at the start of the step.

@@ -1,11 +1,11 @@
 //--------------------------------------------------------------------------
 // boundary.h — an implicit boundary: a polyline with a condition per segment
 //--------------------------------------------------------------------------
-// Seed 003 secs 2.4-3.2. A boundary that need not follow the grid lines: straight
+// [Boundaries] secs 2.4-3.2. A boundary that need not follow the grid lines: straight
 // segments between the points x_0, x_1, ..., each with its condition. The solid
 // lies on one side of the polyline (default: on the left walking from x_0 to
 // x_1, i.e. the polyline runs anticlockwise round the solid). phi, the signed
-// distance of seed 003 eq 16, is positive in the solid; n is the inward unit
+// distance of [Boundaries] eq 16, is positive in the solid; n is the inward unit
 // normal (into the solid, the paper's n-axis of fig 3 and eq 25), t = n turned
 // by +90 degrees, so that T = [n^T; t^T] is the rotation of eq 25.
 // Data only: the bottom layer with mpData.h and analysis.h (docs/structure.md).
@@ -24,7 +24,7 @@ enum class BoundaryType {
   Fixed,            // u = 0 (both directions)
   Roller,           // u.n = 0, the tangent t free (zero shear traction)
   Prescribed,       // u = du per load step (both directions; a rough footing)
-  PrescribedNormal  // u.n = du.n per load step, t free (the pushed side of seed 003 sec 5.1)
+  PrescribedNormal  // u.n = du.n per load step, t free (the pushed side of [Boundaries] sec 5.1)
 };
 enum class SolidSide { Left, Right };  // where the solid lies, walking from x_0 to x_1
 // the inner integral of K2 over the d entries of [D1bar] (eqs 21, 26): Consistent = 1 (the

@@ -29,7 +29,7 @@ void crossings(const Mesh& mesh, const Vector2d& a, const Vector2d& c, int k,
 
 std::vector<CutCell> cutCells(const Mesh& mesh, const Boundary& b) {
   if (!mesh.regular())
-    throw InputError("implicit boundaries (seed 003) need the regular grid: cutCells walks its grid lines");
+    throw InputError("implicit boundaries ([Boundaries]) need the regular grid: cutCells walks its grid lines");
   std::vector<CutCell> cut;
   for (int s = 0; s < b.segments(); ++s) {
     const Vector2d a = b.x[s], c = b.x[s + 1], n = inwardNormal(b, s);

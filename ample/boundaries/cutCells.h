@@ -1,7 +1,7 @@
 //--------------------------------------------------------------------------
 // cutCells — the grid cells each segment of an implicit boundary crosses
 //--------------------------------------------------------------------------
-// Seed 003 sec 4, fig 4(f) and fig 5: only the cells cut by a boundary get the
+// [Boundaries] sec 4, fig 4(f) and fig 5: only the cells cut by a boundary get the
 // stiffness terms K2, K3 (eqs 26-27), integrated along the piece of the segment
 // inside the cell. Segment s runs x(r) = x_s + r (x_s+1 - x_s), r in [0, 1]; it
 // is split where it crosses a grid line, and each piece of positive length

@@ -1,7 +1,7 @@
 //--------------------------------------------------------------------------
 // dirichletBand — the Dirichlet function d(phi) of eq 16 and its band integrals
 //--------------------------------------------------------------------------
-// Seed 003 eq 16, with phi the signed distance (positive in the solid):
+// [Boundaries] eq 16, with phi the signed distance (positive in the solid):
 //   d = 0                     phi < 0        (outside the solid)
 //   d = 1 - (1 - phi/delta)^2 0 <= phi <= delta  (the band: a quadratic ramp)
 //   d = 1                     phi > delta    (inside the solid)

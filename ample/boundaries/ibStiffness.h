@@ -1,7 +1,7 @@
 //--------------------------------------------------------------------------
 // ibStiffness — the implicit-boundary terms K2, K3 (eqs 17-27) and f_ER (eq 28)
 //--------------------------------------------------------------------------
-// Seed 003 secs 3-4. Trial u' = [D] u + u_a (eq 13), [D] the Dirichlet matrix:
+// [Boundaries] secs 3-4. Trial u' = [D] u + u_a (eq 13), [D] the Dirichlet matrix:
 //   Fixed, Prescribed:        [D] = d I                  (both directions)
 //   Roller, PrescribedNormal: [D] = T' diag(d, 1) T = I - (1 - d) n n'   (eq 25, sec 3.2)
 // written [D] = A + d M (A = 0, M = I; or A = I - n n', M = n n'), d of eq 16.

@@ -1,7 +1,7 @@
 //--------------------------------------------------------------------------
 // clipPolygon — the part of a polygon inside a convex window (Sutherland-Hodgman)
 //--------------------------------------------------------------------------
-// Seed 003 sec 4, fig 4(c)-(e): a point's square domain is cut by the solid.
+// [Boundaries] sec 4, fig 4(c)-(e): a point's square domain is cut by the solid.
 // The solid is the subject and the square the window, so the solid may be any
 // simple polygon, convex or not (a funnel); the window must be convex. Each
 // edge of the window (anticlockwise) keeps the half-plane on its left. Where

@@ -1,7 +1,7 @@
 //--------------------------------------------------------------------------
 // formCoord2D — regular background grid of bi-linear quadrilaterals
 //--------------------------------------------------------------------------
-// Seed 002 table 1. Nodes are numbered row by row (x fastest), cells too;
+// [AMPLE] table 1. Nodes are numbered row by row (x fastest), cells too;
 // cell nodes run anticlockwise from the lower-left corner.
 // Inputs:  nelsx, nelsy (cells in x and y) · lx, ly (grid size, m)
 // Outputs: mesh.etpl (nels x 4) · mesh.coord (nodes x 2) · mesh.h · nelsx, nelsy

@@ -1,7 +1,7 @@
 //--------------------------------------------------------------------------
 // shapefunc — bi-linear finite element shape functions of a quadrilateral
 //--------------------------------------------------------------------------
-// Seed 002 table 1. N_a = (1 + xi xi_a)(1 + eta eta_a)/4 for the corner nodes
+// [AMPLE] table 1. N_a = (1 + xi xi_a)(1 + eta eta_a)/4 for the corner nodes
 // (-1,-1), (1,-1), (1,1), (-1,1) (the order of formCoord2D's cells).
 // Inputs:  xsi (2) local coordinates
 // Outputs: N (4) shape functions

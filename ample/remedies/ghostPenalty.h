@@ -1,7 +1,7 @@
 //--------------------------------------------------------------------------
 // ghostPenalty — ghost stabilisation of the cells at the edge of the body
 //--------------------------------------------------------------------------
-// A remedy for nearly empty cells (issue 6), after Burman's ghost penalty
+// A remedy for nearly empty cells, after Burman's ghost penalty
 // (E. Burman, C. R. Acad. Sci. Paris 348, 2010) as used for the implicit MPM by
 // W.M. Coombs, "Ghost stabilisation of the material point method for stable
 // quasi-static and dynamic analysis of large deformation problems", IJNME

@@ -1,7 +1,7 @@
 //--------------------------------------------------------------------------
 // loadSteps — the load steps of a run, and the remedies that retry a failed one
 //--------------------------------------------------------------------------
-// Seed 002 sec 3.2. See loadSteps.h for inputs and outputs.
+// [AMPLE] sec 3.2. See loadSteps.h for inputs and outputs.
 //--------------------------------------------------------------------------
 #include "loadSteps.h"
 #include "constitutive/Hooke3d.h"

@@ -1,7 +1,7 @@
 //--------------------------------------------------------------------------
 // loadSteps — the load steps of a run, and the remedies that retry a failed one
 //--------------------------------------------------------------------------
-// Seed 002 sec 3.2: the load is applied in lstps equal steps; step lstp runs
+// [AMPLE] sec 3.2: the load is applied in lstps equal steps; step lstp runs
 // from the load factor (lstp-1)/lstps to lstp/lstps. With substeps = 0 (the
 // paper's algorithm, the default) next() hands out exactly these steps and
 // retry() rethrows a failure, which stops the run.

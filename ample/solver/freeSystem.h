@@ -2,7 +2,7 @@
 // freeSystem — Kt(fd,fd) of one load step, its pattern and its symbolic analysis
 //--------------------------------------------------------------------------
 // A fast part (see docs/structure.md, "The fast parts"). linSolve solves
-// Kt(fd,fd) duvw(fd) = rhs (seed 002 eq 29) in every Newton-Raphson pass.
+// Kt(fd,fd) duvw(fd) = rhs ([AMPLE] eq 29) in every Newton-Raphson pass.
 // Within a load step the free dofs fd and Kt's pattern do not change, so
 //   buildFreeSystem  extracts the pattern of Kt(fd,fd) once, remembers where
 //                    each of its values sits in Kt (fromKt) and runs the
@@ -14,7 +14,7 @@
 // entry, O(nnz)) are those of the step before (no point entered or left a
 // cell) keeps the analysis too.
 // choice (setup parameter solver=, docs/scaling.md "The sparse solve"):
-//   LU          Eigen's SparseLU, COLAMD ordering (the design card's; measured
+//   LU          Eigen's SparseLU, COLAMD ordering (the default; measured
 //               against AMD and METIS in docs/scaling.md: the least fill)
 //   LDLT        Eigen's SimplicialLDLT, AMD ordering          } used in every pass whose
 //   LDLT_METIS  the same with METIS (built with AMPLE_METIS)  } Kt(fd,fd) is symmetric

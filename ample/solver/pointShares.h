@@ -1,7 +1,7 @@
 //--------------------------------------------------------------------------
 // pointShares — the point loops of detMPs and elemMPinfo on several threads
 //--------------------------------------------------------------------------
-// Issue 14 (two cores); no equation of the papers: how the loop over points
+// Two cores (OpenMP); no equation of the papers: how the loop over points
 // is split, not what it computes.
 // pointThreads(np): 1 without OpenMP (CMake option AMPLE_OPENMP) or for fewer
 //   than 2048 points a thread (small runs stay serial, bit for bit), else

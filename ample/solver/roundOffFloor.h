@@ -4,7 +4,7 @@
 // Newton-Raphson drives the computed residual oobf = fext - fint(u) + frct
 // (eq 31) down until it reaches the round-off of evaluating fint at a given u;
 // below that the pass's correction is noise and fErr stops falling (a stall).
-// This estimates that level for the point loop of detMPs (seed 002 eqs 14-18),
+// This estimates that level for the point loop of detMPs ([AMPLE] eqs 14-18),
 // in double precision: every operation rounds to nearest, with a relative
 // error of at most the unit roundoff u = DBL_EPSILON / 2 = 1.1e-16.
 //
@@ -47,7 +47,7 @@
 // du (step 1) is.
 // It is an estimate of an order of magnitude (on the side of too high: a sum's
 // round-off is rarely its bound). Not included: the penalty of the implicit
-// boundaries (seed 003), whose K3 ~ 1e6 K1 makes a floor of its own
+// boundaries ([Boundaries]), whose K3 ~ 1e6 K1 makes a floor of its own
 // (docs/implicitBoundaries.md): a stall there above 10 x this estimate is not
 // named a floor by checkConverged (not measured). Computed only when a step has failed
 // (checkConverged), from the state of its last pass; it changes no result.

@@ -1,7 +1,7 @@
 //--------------------------------------------------------------------------
 // stiffnessPattern — the sparsity of Kt for one load step
 //--------------------------------------------------------------------------
-// Seed 002 eq 30. See stiffnessPattern.h for what it saves, inputs and outputs.
+// [AMPLE] eq 30. See stiffnessPattern.h for what it saves, inputs and outputs.
 //--------------------------------------------------------------------------
 #include "stiffnessPattern.h"
 #include <algorithm>

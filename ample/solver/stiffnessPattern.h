@@ -1,7 +1,7 @@
 //--------------------------------------------------------------------------
 // stiffnessPattern — the sparse matrix type and the sparsity of Kt for one load step
 //--------------------------------------------------------------------------
-// A fast part (see docs/structure.md, "The fast parts"). Seed 002 eq 30: Kt
+// A fast part (see docs/structure.md, "The fast parts"). [AMPLE] eq 30: Kt
 // couples two nodes when a material point links both. The points link the
 // same nodes in every Newton-Raphson pass of a load step, so
 //   stiffnessPattern  builds the pattern once per step, from node buckets

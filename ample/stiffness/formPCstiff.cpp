@@ -1,7 +1,7 @@
 //--------------------------------------------------------------------------
 // formPCstiff — consistent tangent of the previously converged formulation
 //--------------------------------------------------------------------------
-// Seed 000 eqs A.3-A.6. See formPCstiff.h for inputs and outputs.
+// [Lagrangian] eqs A.3-A.6. See formPCstiff.h for inputs and outputs.
 //--------------------------------------------------------------------------
 #include "formPCstiff.h"
 

@@ -1,7 +1,7 @@
 //--------------------------------------------------------------------------
 // formPCstiff — consistent tangent of the previously converged formulation
 //--------------------------------------------------------------------------
-// Seed 000 appendix A.2, eqs A.3-A.6, with P~ = tau dF^-T / Jn (eq 18):
+// [Lagrangian] appendix A.2, eqs A.3-A.6, with P~ = tau dF^-T / Jn (eq 18):
 //   A~_ijkl = (1/Jn) [ dtau_im/d dF_kl (dF^-1)_jm - tau_im (dF^-1)_jk (dF^-1)_lm ]
 //   dtau_im/d dF_kl = 1/2 D_imop L_oprs B~_rskl                      (A.4)
 //   B~_rskl = delta_rk (b_e,n dF')_ls + (dF b_e,n)_rl delta_sk        (A.5)

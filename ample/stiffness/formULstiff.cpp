@@ -1,7 +1,7 @@
 //--------------------------------------------------------------------------
 // formULstiff — spatial consistent tangent a_ijkl of the updated Lagrangian form
 //--------------------------------------------------------------------------
-// Seed 000 eqs A.1-A.2. See formULstiff.h for inputs and outputs.
+// [Lagrangian] eqs A.1-A.2. See formULstiff.h for inputs and outputs.
 //--------------------------------------------------------------------------
 #include "formULstiff.h"
 #include "ample/classroom/exercise.h"

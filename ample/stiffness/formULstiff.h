@@ -1,7 +1,7 @@
 //--------------------------------------------------------------------------
 // formULstiff — spatial consistent tangent a_ijkl of the updated Lagrangian form
 //--------------------------------------------------------------------------
-// Seed 000 appendix A.1, eqs A.1-A.2 (used in seed 002 eqs 13-14):
+// [Lagrangian] appendix A.1, eqs A.1-A.2 (used in [AMPLE] eqs 13-14):
 //   a_ijkl = 1/(2J) D_ijmn L_mnpq B_pqkl - sigma_il delta_jk
 //   L = d ln(b_e)/d b_e (Daleckii-Krein form of the derivative of the matrix
 //   logarithm, limit 1/lambda for equal eigenvalues),

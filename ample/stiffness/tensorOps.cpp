@@ -1,7 +1,7 @@
 //--------------------------------------------------------------------------
 // tensorOps — small helpers between 6-vectors and 3x3 symmetric tensors
 //--------------------------------------------------------------------------
-// See tensorOps.h. Seed 002 eqs 9-10 (exponential and logarithm).
+// See tensorOps.h. [AMPLE] eqs 9-10 (exponential and logarithm).
 //--------------------------------------------------------------------------
 #include "tensorOps.h"
 #include <Eigen/Eigenvalues>

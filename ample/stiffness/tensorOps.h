@@ -4,8 +4,8 @@
 // Voigt order [xx yy zz xy yz zx]. Strain 6-vectors carry engineering shear
 // (gamma = 2 eps), stress 6-vectors the tensor components. symExp/symLog are
 // the exponential and logarithm of a symmetric tensor through its spectral
-// decomposition (seed 002 eqs 9-10); stretchTensor the right stretch U of
-// F = R U (seed 000 eq 34).
+// decomposition ([AMPLE] eqs 9-10); stretchTensor the right stretch U of
+// F = R U ([Lagrangian] eq 34).
 // Inputs/outputs: 6-vectors and 3x3 matrices as named.
 // Tests:   tests/test_tensorOps.cpp
 //--------------------------------------------------------------------------

@@ -15,13 +15,13 @@
 //               16 (solver=LDLT), compaction 2^16 cells
 //   beam        tip displacement for a = 1, 2, 4 (6x6) and mp = 2, 3, 4 (a = 2),
 //               with the load-displacement history of each run
-//   collapse    extent and height, seed 002 table 5 and seed 000 table 6
-//   newton      residuals of chosen steps (seed 000 tables 3 and 8)
+//   collapse    extent and height, [AMPLE] table 5 and [Lagrangian] table 6
+//   newton      residuals of chosen steps ([Lagrangian] tables 3 and 8)
 //   remedies    ghost penalty and load-step sub-division (off by default)
 //   methods     UL against PC and the GIMP domain updates on the collapse
-//               (seed 000 table 7), compaction with every update (fig 7)
-//   deepbeam    seed 003 tables II (points per cell, and 38^2) and III (h), both K2 couplings
-//   ibshear     seed 003 fig 16: shear stress error against xA = 0, 5, ..., 100 mm, both couplings
+//               ([Lagrangian] table 7), compaction with every update (fig 7)
+//   deepbeam    [Boundaries] tables II (points per cell, and 38^2) and III (h), both K2 couplings
+//   ibshear     [Boundaries] fig 16: shear stress error against xA = 0, 5, ..., 100 mm, both couplings
 // A case argument threads=N (the bench's own, not the program's) runs that case
 // with N OpenMP threads (omp_set_num_threads in the child); without it the
 // OpenMP default (OMP_NUM_THREADS, else the cores) holds.
@@ -208,7 +208,7 @@ std::vector<Suite> suites(bool quick) {
   for (const char* t : {"CPDI1", "CPDI2"}) met.cases.push_back(A({"collapse", "mp=6", std::string("mpType=") + t}));
   all.push_back(met);
 
-  // remedies (issue 6): ghost penalty on the beams that stop, sub-division of large steps
+  // remedies: ghost penalty on the beams that stop, sub-division of large steps
   Suite rem{"remedies", {}, {"tip_u_over_l", "tip_v_over_l", "error", "extent", "height"}};
   for (const char* g : {"0", "0.001", "0.01", "0.1"})
     for (const char* mp : {"2", "6"}) rem.cases.push_back(A({"beam", "a=2", std::string("mp=") + mp, std::string("ghost=") + g}));
@@ -232,7 +232,7 @@ std::vector<Suite> suites(bool quick) {
                         A({"compaction", n, "mpType=2", "domainUpdate=none"})}, {"error"}};
   all.push_back(sav);
 
-  // seed 003 sec 5.2: rA against the bilinear FE solution on the same grid (tables II, III);
+  // [Boundaries] sec 5.2: rA against the bilinear FE solution on the same grid (tables II, III);
   // 38^2 beside 40^2: the paper's 40^2 row lies off its own 1/mp^2 trend, on our 38^2
   Suite db{"deepbeam", {}, {"rA", "rA_mid", "vA_mm", "vA_FE_mm", "dofs", "points", "wall_seconds"}};
   for (const char* k : {"ibK2=0", "ibK2=1"}) {
@@ -242,7 +242,7 @@ std::vector<Suite> suites(bool quick) {
       if (!quick || std::string(h) != "h=0.001") db.cases.push_back(A({"deepbeam", "mp=4", h, k}));
   }
   all.push_back(db);
-  // seed 003 sec 5.3, fig 16: the fixed implicit boundary at xA = 0, 5, ..., 100 mm
+  // [Boundaries] sec 5.3, fig 16: the fixed implicit boundary at xA = 0, 5, ..., 100 mm
   Suite ibs{"ibshear", {}, {"r_sxy", "r_sxy_max", "ru", "sxy_mean_MPa", "wall_seconds"}};
   for (const char* k : {"ibK2=0", "ibK2=1"})
     for (int mm = 0; mm <= 100; mm += quick ? 25 : 5)

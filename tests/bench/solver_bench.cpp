@@ -1,7 +1,7 @@
 //--------------------------------------------------------------------------
 // solver_bench — orderings and sparse solvers on the collapse's Kt(fd,fd)
 //--------------------------------------------------------------------------
-// Issue 14, "The sparse solve" (docs/scaling.md). For the collapse (seed 002
+// "The sparse solve" (docs/scaling.md). For the collapse ([AMPLE]
 // sec 5.3) at grid refinement a (h = 2 m / a) with mp x mp points per cell it
 // builds the free stiffness Kt(fd,fd) of load step 1 (or later) as the main loop does
 // (setupGrid, elemMPinfo, detFDoFs, stiffnessPattern, detMPs at uvw = 0: the
