@@ -12,12 +12,16 @@ Right, low:  the setup's history.csv if it writes one (e.g. load against displac
 
 usage: plot_run.py OUTDIR [--field NAME] [--original] [--deformed-grid] [--out PNG]
                    [--history X Y[,Y...]]
+       plot_run.py --animate OUTDIR [--field NAME] [--out HTML]
   --field         one of: vonMises sxx syy szz sxy p ux uy u J  (default vonMises)
   --original      points at their original positions X0 (and the first grid written, mesh.vtk)
   --deformed-grid the grid of the last converged step moved by that step's nodal displacement
                   increment (mesh_<lstp>.vtk: written with --vtk N when N divides that step)
   --out           the PNG to write (default OUTDIR/run.png)
   --history       history.csv columns: X against Y (several: Y1,Y2)
+  --animate       instead of the PNG, one self-contained HTML page of every load step written
+                  (mpData_<lstp>.vtk), with a slider and play/pause (animate_run.py, default
+                  OUTDIR/run.html; needs no matplotlib)
 e.g.   build/release/ample collapse --out output/collapse && plotting/plot_run.py output/collapse
 Tests: tests/plot_run_test.sh (CTest plot.run)
 """
@@ -27,6 +31,10 @@ import math
 import os
 import re
 import sys
+import textwrap
+if __name__ == "__main__" and "--animate" in sys.argv[1:]:   # the page needs no matplotlib
+    import animate_run
+    sys.exit(animate_run.main([a for a in sys.argv[1:] if a != "--animate"]))
 import matplotlib
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt
@@ -154,7 +162,11 @@ def main(argv):
     ap.add_argument("--deformed-grid", action="store_true")
     ap.add_argument("--out")
     ap.add_argument("--history", nargs=2, metavar=("X", "Y"))
+    ap.add_argument("--animate", action="store_true", help="an HTML page of every load step written")
     opt = ap.parse_args(argv)
+    if opt.animate:
+        import animate_run
+        return animate_run.main([a for a in argv if a != "--animate"])
     if not os.path.exists(os.path.join(opt.outdir, "summary.json")):
         sys.exit("plot_run.py: %s has no summary.json: not the output folder of a run" % opt.outdir)
     summary = read_summary(opt.outdir)
