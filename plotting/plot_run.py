@@ -99,14 +99,11 @@ def draw_points(ax, fig, outdir, summary, opt):
     ax.add_collection(pc)
     ax.update_datalim([p for b in boxes for p in b])
     ax.autoscale_view()
-    (x0, x1), (y0, y1) = ax.get_xlim(), ax.get_ylim()
-    slender = not 1 / 6 < (y1 - y0) / (x1 - x0) < 6    # a column: to scale it is a line
-    ax.set_aspect("auto" if slender else "equal")
+    ax.set_aspect("equal", adjustable="datalim")      # to scale: a point's square stays square
     ax.set_xlabel("x (m)")
     ax.set_ylabel("y (m)")
     where = "original positions" if opt.original else "load step %d" % step
-    ax.set_title("%d points, %s%s" % (len(rows), where, " (axes not to scale)" if slender else ""),
-                 fontsize=10)
+    ax.set_title("%d points, %s" % (len(rows), where), fontsize=10)
     bar = fig.colorbar(pc, ax=ax, label=FIELDS[opt.field][1], shrink=0.8)
     bar.formatter.set_useOffset(False)                 # values as they are, not 1e-8 + offset
 
@@ -147,11 +144,14 @@ def draw_setup_history(ax, outdir, summary, opt):
     ax.set_title("history.csv: %s against %s" % (", ".join(ys), x), fontsize=10)
 
 
-def title_of(summary):
-    state = "converged" if summary["converged"] else "stopped: " + summary["message"][:60]
+def title_of(summary, width=110):
+    """the figure's title, its lines at most width characters: a stopped run's whole message"""
+    head = "%s — load step %d of %d, " % (summary["setup"], summary["last_converged_step"],
+                                         summary["lstps"])
+    lines = [head + "converged"] if summary["converged"] else \
+        textwrap.wrap(head + "stopped: " + summary["message"], width)
     results = ", ".join("%s = %.4g" % kv for kv in list(summary["results"].items())[:3])
-    return "%s — load step %d of %d, %s\n%s" % (summary["setup"], summary["last_converged_step"],
-                                                summary["lstps"], state, results)
+    return "\n".join(lines + ([results] if results else []))
 
 
 def main(argv):
@@ -171,14 +171,16 @@ def main(argv):
         sys.exit("plot_run.py: %s has no summary.json: not the output folder of a run" % opt.outdir)
     summary = read_summary(opt.outdir)
     has_history = os.path.exists(os.path.join(opt.outdir, "history.csv"))
-    fig = plt.figure(figsize=(12, 5.2))
+    title = title_of(summary)
+    extra = 0.2 * max(0, title.count("\n") - 1)      # inches for title lines beyond two
+    fig = plt.figure(figsize=(12, 5.2 + extra))
     gs = fig.add_gridspec(2, 2, width_ratios=[1.7, 1])
     draw_points(fig.add_subplot(gs[:, 0]), fig, opt.outdir, summary, opt)
     draw_convergence(fig.add_subplot(gs[0, 1] if has_history else gs[:, 1]), fig, opt.outdir, summary)
     if has_history:
         draw_setup_history(fig.add_subplot(gs[1, 1]), opt.outdir, summary, opt)
-    fig.suptitle(title_of(summary), fontsize=11)
-    fig.tight_layout()
+    fig.suptitle(title, fontsize=11)
+    fig.tight_layout()                                  # (it leaves room for the title)
     out = opt.out or os.path.join(opt.outdir, "run.png")
     fig.savefig(out, dpi=100)
     print(out)
