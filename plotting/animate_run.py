@@ -151,7 +151,7 @@ PAGE = r"""<!DOCTYPE html>
  #controls input[type=range] { width: 520px; vertical-align: middle; }
  #play { width: 70px; }
  canvas { display: block; border: 1px solid #ddd; }
- #status { font-size: 11px; color: #888; white-space: pre-wrap; max-width: 1100px; }
+ #status { display: none; }   /* what the page drew, for tests/animate_check.py */
  #errors { color: #c00; font-size: 13px; white-space: pre-wrap; }
 </style>
 <script>
@@ -183,7 +183,7 @@ window.addEventListener("error", function (e) {
 "use strict";
 var RUN = JSON.parse(document.getElementById("run-data").textContent);
 var frames = RUN.frames, grids = RUN.grids;
-var W = 980, H = 600;                        // canvas size in CSS pixels
+var W = 980;                                 // canvas width in CSS pixels; the height follows the body
 var BAR = 120;                               // room for the colour bar, right
 var M = {left: 70, right: 16 + BAR, top: 16, bottom: 46};
 // matplotlib's viridis, 17 samples, interpolated linearly
@@ -230,7 +230,9 @@ if (!(xmax > xmin)) { xmin -= 0.5; xmax += 0.5; }
 if (!(ymax > ymin)) { ymin -= 0.5; ymax += 0.5; }
 var pad = 0.02 * Math.max(xmax - xmin, ymax - ymin);
 xmin -= pad; xmax += pad; ymin -= pad; ymax += pad;
-var plotW = W - M.left - M.right, plotH = H - M.top - M.bottom;
+var plotW = W - M.left - M.right;
+var plotH = Math.max(260, Math.min(620, plotW * (ymax - ymin) / (xmax - xmin)));
+var H = plotH + M.top + M.bottom;
 var scale = Math.min(plotW / (xmax - xmin), plotH / (ymax - ymin));
 // centre the drawing in the plot area: the unused room is shared on both sides
 var ox = M.left + 0.5 * (plotW - scale * (xmax - xmin)), oy = M.top + 0.5 * (plotH - scale * (ymax - ymin));
