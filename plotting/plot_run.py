@@ -12,12 +12,16 @@ Right, low:  the setup's history.csv if it writes one (e.g. load against displac
 
 usage: plot_run.py OUTDIR [--field NAME] [--original] [--deformed-grid] [--out PNG]
                    [--history X Y[,Y...]]
+       plot_run.py --animate OUTDIR [--field NAME] [--out HTML]
   --field         one of: vonMises sxx syy szz sxy p ux uy u J  (default vonMises)
   --original      points at their original positions X0 (and the first grid written, mesh.vtk)
   --deformed-grid the grid of the last converged step moved by that step's nodal displacement
                   increment (mesh_<lstp>.vtk: written with --vtk N when N divides that step)
   --out           the PNG to write (default OUTDIR/run.png)
   --history       history.csv columns: X against Y (several: Y1,Y2)
+  --animate       instead of the PNG, one self-contained HTML page of every load step written
+                  (mpData_<lstp>.vtk), with a slider and play/pause (animate_run.py, default
+                  OUTDIR/run.html; needs no matplotlib)
 e.g.   build/release/ample collapse --out output/collapse && plotting/plot_run.py output/collapse
 Tests: tests/plot_run_test.sh (CTest plot.run)
 """
@@ -27,6 +31,10 @@ import math
 import os
 import re
 import sys
+import textwrap
+if __name__ == "__main__" and "--animate" in sys.argv[1:]:   # the page needs no matplotlib
+    import animate_run
+    sys.exit(animate_run.main([a for a in sys.argv[1:] if a != "--animate"]))
 import matplotlib
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt
@@ -91,14 +99,11 @@ def draw_points(ax, fig, outdir, summary, opt):
     ax.add_collection(pc)
     ax.update_datalim([p for b in boxes for p in b])
     ax.autoscale_view()
-    (x0, x1), (y0, y1) = ax.get_xlim(), ax.get_ylim()
-    slender = not 1 / 6 < (y1 - y0) / (x1 - x0) < 6    # a column: to scale it is a line
-    ax.set_aspect("auto" if slender else "equal")
+    ax.set_aspect("equal", adjustable="datalim")      # to scale: a point's square stays square
     ax.set_xlabel("x (m)")
     ax.set_ylabel("y (m)")
     where = "original positions" if opt.original else "load step %d" % step
-    ax.set_title("%d points, %s%s" % (len(rows), where, " (axes not to scale)" if slender else ""),
-                 fontsize=10)
+    ax.set_title("%d points, %s" % (len(rows), where), fontsize=10)
     bar = fig.colorbar(pc, ax=ax, label=FIELDS[opt.field][1], shrink=0.8)
     bar.formatter.set_useOffset(False)                 # values as they are, not 1e-8 + offset
 
@@ -139,11 +144,14 @@ def draw_setup_history(ax, outdir, summary, opt):
     ax.set_title("history.csv: %s against %s" % (", ".join(ys), x), fontsize=10)
 
 
-def title_of(summary):
-    state = "converged" if summary["converged"] else "stopped: " + summary["message"][:60]
+def title_of(summary, width=110):
+    """the figure's title, its lines at most width characters: a stopped run's whole message"""
+    head = "%s — load step %d of %d, " % (summary["setup"], summary["last_converged_step"],
+                                         summary["lstps"])
+    lines = [head + "converged"] if summary["converged"] else \
+        textwrap.wrap(head + "stopped: " + summary["message"], width)
     results = ", ".join("%s = %.4g" % kv for kv in list(summary["results"].items())[:3])
-    return "%s — load step %d of %d, %s\n%s" % (summary["setup"], summary["last_converged_step"],
-                                                summary["lstps"], state, results)
+    return "\n".join(lines + ([results] if results else []))
 
 
 def main(argv):
@@ -154,19 +162,25 @@ def main(argv):
     ap.add_argument("--deformed-grid", action="store_true")
     ap.add_argument("--out")
     ap.add_argument("--history", nargs=2, metavar=("X", "Y"))
+    ap.add_argument("--animate", action="store_true", help="an HTML page of every load step written")
     opt = ap.parse_args(argv)
+    if opt.animate:
+        import animate_run
+        return animate_run.main([a for a in argv if a != "--animate"])
     if not os.path.exists(os.path.join(opt.outdir, "summary.json")):
         sys.exit("plot_run.py: %s has no summary.json: not the output folder of a run" % opt.outdir)
     summary = read_summary(opt.outdir)
     has_history = os.path.exists(os.path.join(opt.outdir, "history.csv"))
-    fig = plt.figure(figsize=(12, 5.2))
+    title = title_of(summary)
+    extra = 0.2 * max(0, title.count("\n") - 1)      # inches for title lines beyond two
+    fig = plt.figure(figsize=(12, 5.2 + extra))
     gs = fig.add_gridspec(2, 2, width_ratios=[1.7, 1])
     draw_points(fig.add_subplot(gs[:, 0]), fig, opt.outdir, summary, opt)
     draw_convergence(fig.add_subplot(gs[0, 1] if has_history else gs[:, 1]), fig, opt.outdir, summary)
     if has_history:
         draw_setup_history(fig.add_subplot(gs[1, 1]), opt.outdir, summary, opt)
-    fig.suptitle(title_of(summary), fontsize=11)
-    fig.tight_layout()
+    fig.suptitle(title, fontsize=11)
+    fig.tight_layout()                                  # (it leaves room for the title)
     out = opt.out or os.path.join(opt.outdir, "run.png")
     fig.savefig(out, dpi=100)
     print(out)

@@ -3,6 +3,8 @@
 Used by plot_run.py, plot_points.py and plot_history.py (no plotting here).
   read_csv(path)            rows of a CSV file as dicts of floats (steps, residuals, history, mp_final)
   read_summary(outdir)      summary.json as a dict
+  read_legacy_vtk(path)     everything of a legacy VTK file of ample, ASCII or BINARY: points
+                            (x, y), cells (lists of node numbers), point data (name: values)
   read_vtk(path, field)     points (x, y) and one named scalar of an mpData_<lstp>.vtk file
   read_mesh(path)           nodes (x, y), cells (lists of node numbers) and the nodal
                             displacement (or None) of a mesh.vtk / mesh_<lstp>.vtk file
@@ -11,6 +13,7 @@ Used by plot_run.py, plot_points.py and plot_history.py (no plotting here).
 import csv
 import json
 import math
+import struct
 
 
 def read_csv(path):
@@ -23,36 +26,96 @@ def read_summary(outdir):
         return json.load(f)
 
 
-def _lines(path):
-    with open(path) as f:
-        return f.read().split("\n")
+class _VtkReader:
+    """the sections of a legacy VTK file as ample writes them (plotting/makeVtkWriter.cpp):
+    keyword lines in text; data in text (ASCII) or big-endian 4-byte float / int32 (BINARY)"""
+
+    SIZE = {"float": (4, "f"), "double": (8, "d"), "int": (4, "i"), "vtkIdType": (4, "i")}
+
+    def __init__(self, path):
+        with open(path, "rb") as f:
+            self.data = f.read()
+        self.pos = 0
+        if not self.line().startswith("# vtk DataFile"):
+            raise ValueError("%s: not a legacy VTK file" % path)
+        self.title = self.line()
+        self.binary = self.line().strip().upper() == "BINARY"
+
+    def line(self):
+        """the next non-empty text line, or None at the end"""
+        while self.pos < len(self.data):
+            end = self.data.find(b"\n", self.pos)
+            end = len(self.data) if end < 0 else end
+            text = self.data[self.pos:end].decode("ascii", "replace").strip()
+            self.pos = end + 1
+            if text:
+                return text
+        return None
+
+    def values(self, count, kind):
+        if self.binary:
+            size, code = self.SIZE[kind]
+            chunk = self.data[self.pos:self.pos + size * count]
+            self.pos += size * count
+            if self.data[self.pos:self.pos + 1] == b"\n":
+                self.pos += 1
+            return list(struct.unpack(">%d%s" % (count, code), chunk))
+        out = []
+        convert = int if kind in ("int", "vtkIdType") else float
+        while len(out) < count:
+            out += [convert(t) for t in self.line().split()]
+        return out
+
+
+def read_legacy_vtk(path):
+    """{"points": [(x, y)], "cells": [[node, ...]], "data": {name: [value] or [(x, y, z)]}}"""
+    r = _VtkReader(path)
+    out = {"points": [], "cells": [], "data": {}}
+    n = 0
+    while True:
+        head = r.line()
+        if head is None:
+            return out
+        w = head.split()
+        if w[0] == "POINTS":
+            n = int(w[1])
+            v = r.values(3 * n, w[2])
+            out["points"] = [(v[3 * p], v[3 * p + 1]) for p in range(n)]
+        elif w[0] == "CELLS":
+            v = r.values(int(w[2]), "int")
+            k = 0
+            for _ in range(int(w[1])):
+                out["cells"].append(v[k + 1:k + 1 + v[k]])
+                k += 1 + v[k]
+        elif w[0] == "CELL_TYPES":
+            r.values(int(w[1]), "int")
+        elif w[0] == "VECTORS":
+            v = r.values(3 * n, w[2])
+            out["data"][w[1]] = [tuple(v[3 * p:3 * p + 3]) for p in range(n)]
+        elif w[0] == "SCALARS":
+            components = int(w[3]) if len(w) > 3 else 1
+            pos = r.pos
+            if not (r.line() or "").startswith("LOOKUP_TABLE"):
+                r.pos = pos
+            v = r.values(components * n, w[2])
+            out["data"][w[1]] = v if components == 1 else \
+                [tuple(v[components * p:components * (p + 1)]) for p in range(n)]
+        # DATASET, POINT_DATA, CELL_DATA: nothing to read after the keyword line
 
 
 def read_vtk(path, field):
-    """points (x, y) and the named scalar of a legacy ASCII VTK file of ample"""
-    lines = _lines(path)
-    i = next(k for k, l in enumerate(lines) if l.startswith("POINTS"))
-    n = int(lines[i].split()[1])
-    xy = [tuple(map(float, lines[i + 1 + p].split()[:2])) for p in range(n)]
-    j = next(k for k, l in enumerate(lines) if l.startswith("SCALARS " + field + " "))
-    start = j + 2 if lines[j + 1].startswith("LOOKUP_TABLE") else j + 1
-    values = [float(lines[start + p]) for p in range(n)]
-    return xy, values
+    """points (x, y) and the named scalar of a legacy VTK file of ample (ASCII or BINARY)"""
+    v = read_legacy_vtk(path)
+    if field not in v["data"]:
+        raise KeyError("%s has no field %s" % (path, field))
+    return v["points"], v["data"][field]
 
 
 def read_mesh(path):
     """nodes, cells and nodal displacement (None if the file has none) of a mesh VTK file"""
-    lines = _lines(path)
-    i = next(k for k, l in enumerate(lines) if l.startswith("POINTS"))
-    n = int(lines[i].split()[1])
-    nodes = [tuple(map(float, lines[i + 1 + p].split()[:2])) for p in range(n)]
-    j = next(k for k, l in enumerate(lines) if l.startswith("CELLS"))
-    cells = [[int(t) for t in lines[j + 1 + e].split()[1:]] for e in range(int(lines[j].split()[1]))]
-    disp = None
-    if any(l.startswith("VECTORS displacement") for l in lines):
-        d = next(k for k, l in enumerate(lines) if l.startswith("VECTORS displacement"))
-        disp = [tuple(map(float, lines[d + 1 + p].split()[:2])) for p in range(n)]
-    return nodes, cells, disp
+    v = read_legacy_vtk(path)
+    disp = v["data"].get("displacement")
+    return v["points"], v["cells"], [d[:2] for d in disp] if disp else None
 
 
 def von_mises(r):

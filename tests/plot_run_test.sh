@@ -7,8 +7,10 @@
 # --deformed-grid --field uy --history), reads every PNG back with matplotlib and checks
 # that it is not blank: at least 64 distinct colours, coloured pixels (the
 # viridis points) on at least 2 % of the left panel and the coloured
-# convergence lines on at least 0.2 % of the right one. A folder that is not a
-# run's output must give a clear error and a non-zero exit.
+# convergence lines on at least 0.2 % of the right one. The points' panel is to scale (one
+# metre as many pixels in x as in y, the column of compaction too), and a run that stopped
+# (collapse on a grid too narrow) has its whole message in the title, inside the picture.
+# A folder that is not a run's output must give a clear error and a non-zero exit.
 # Skips (exit 77) when no python3 with matplotlib is found (/usr/bin/python3 first).
 # Usage: tests/plot_run_test.sh AMPLE_BINARY WORKDIR
 #--------------------------------------------------------------------------
@@ -46,8 +48,39 @@ for path in sys.argv[1:]:
 sys.exit(bad)
 PY
 
+# equal axes, and a stopped run's title whole and inside the figure
+"$ample" collapse a=1 mp=2 lstps=10 width=9 --vtk 2 --quiet --out "$work/stopped" 2> /dev/null &&
+  { echo "collapse width=9 was expected to stop (a point leaves the grid)"; exit 1; }
+"$py" - "$root/plotting" "$work" <<'PY'
+import json, os, sys
+sys.path.insert(0, sys.argv[1])
+import matplotlib.pyplot as plt
+import plot_run
+bad = 0
+for run in ("compaction", "stretch", "stopped"):
+    outdir = os.path.join(sys.argv[2], run)
+    plot_run.main([outdir, "--out", os.path.join(sys.argv[2], run + "_check.png")])
+    fig = plt.gcf()
+    renderer = fig.canvas.get_renderer()
+    (x0, y0), (x1, y1) = fig.axes[0].transData.transform([(0, 0), (1, 1)])
+    sx, sy = abs(x1 - x0), abs(y1 - y0)                 # pixels per metre
+    equal = abs(sx - sy) <= 1e-6 * max(sx, sy)
+    title = fig._suptitle
+    box, page = title.get_window_extent(renderer), fig.bbox
+    inside = box.x0 >= page.x0 and box.x1 <= page.x1 and box.y0 >= page.y0 and box.y1 <= page.y1
+    summary = json.load(open(os.path.join(outdir, "summary.json")))
+    whole = " ".join(summary["message"].split()) in " ".join(title.get_text().split())
+    ok = equal and inside and whole and (run != "stopped" or not summary["converged"])
+    print("%s: %.1f x %.1f pixels per metre, title %s, %s: %s"
+          % (run, sx, sy, "inside" if inside else "CUT OFF", "message whole" if whole
+             else "MESSAGE CUT", "ok" if ok else "BAD"))
+    bad += not ok
+    plt.close(fig)
+sys.exit(bad)
+PY
+
 if out=$("$py" "$root/plotting/plot_run.py" "$work" 2>&1); then
   echo "plot_run.py accepted $work, which is not a run's output folder"; exit 1
 fi
 grep -q "has no summary.json" <<< "$out" || { echo "unclear error: $out"; exit 1; }
-echo "plot_run.py: 2 pictures not blank, bad folder refused"
+echo "plot_run.py: 2 pictures not blank, 3 to scale with whole titles, bad folder refused"
