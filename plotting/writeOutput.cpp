@@ -191,7 +191,7 @@ void writeOutput(const Setup& setup, const Params& P, const Analysis& an, const 
     if (std::isfinite(r.second)) std::printf("  %-14s %.10g\n", r.first.c_str(), r.second);
     else std::printf("  %-14s undefined: %s\n", r.first.c_str(), why.c_str());
   }
-  std::printf("output in %s: draw it with plotting/plot_run.py %s (the .vtk files open in ParaView)\n",
+  std::printf("output in %s: draw it with plotting/plot_run.py %s (--animate: a page to play it)\n",
               outDir.c_str(), outDir.c_str());
 }
 
