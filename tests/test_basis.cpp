@@ -112,7 +112,7 @@ TEST_SUITE("SvpMPM") {
     CHECK(SvpMPM(1e-6, h).dS == -2.0);                  // really right of the node
     CHECK(SvpMPM(4e-16, h).S == doctest::Approx(1.0));  // the value is continuous
   }
-  TEST_CASE("SvpMPM: spacings 0.3, 2, 1e4, 1e-3 in turn: hand values, zero outside the support, unity and reproduction on shifted grids") {
+  TEST_CASE("SvpMPM: spacings 0.3 / 2 / 1e4 / 1e-3 in turn: hand values / zero outside the support / unity and reproduction on shifted grids") {
     // each spacing twice, after the others: nothing of one call may be kept for the next;
     // node positions x0 + k hh with an origin x0 off zero
     const double hs[4] = {0.3, 2.0, 1e4, 1e-3}, x0s[4] = {-1.7, 3.25, 2.5e4, 0.0123};
@@ -197,7 +197,7 @@ TEST_SUITE("SvpGIMP") {
       CHECK(std::abs(fd - dS[k]) <= 1e-6);  // the value S itself has this slope
     }
   }
-  TEST_CASE("SvpGIMP: value and gradient continuous across the region boundaries, with their hand values") {
+  TEST_CASE("SvpGIMP: value and gradient continuous across the region boundaries / with their hand values") {
     // A|B, B|C, C|D, D|E, and the outer ends of A and E (where S and dS reach 0); at
     // d = -h+l: S = (2l)^2/(4hl) = l/h = 0.2, dS = 2l/(2hl) = 1/h = 2; at d = -l: S = 1 - l/h = 0.8,
     // dS = l/(hl) = 2 (mirrored for d > 0)
@@ -232,7 +232,7 @@ TEST_SUITE("SvpGIMP") {
     CHECK(SvpGIMP(dA, h, lp).S ==
           doctest::Approx(hatIntegral(-h, dA + lp) / (2 * lp)).epsilon(1e-13));
   }
-  TEST_CASE("SvpGIMP: spacings 0.3, 2, 7.5 and lp = h/4, h/2 in turn: hand values of each region, zero outside") {
+  TEST_CASE("SvpGIMP: spacings 0.3 / 2 / 7.5 and lp = h/4 / h/2 in turn: hand values of each region / zero outside") {
     // h = 1, l = 1/4 (4hl = 1, 2hl = 1/2, hl = 1/4), d/h in each region:
     //   A d = -1.1: S = 0.15^2 = 0.0225, dS = 0.15/0.5 = 0.3   B d = -0.5: S = 0.5, dS = 1
     //   C d = 0.1:  S = 1 - (0.01 + 0.0625)/0.5 = 0.855, dS = -0.1/0.25 = -0.4
@@ -265,7 +265,7 @@ TEST_SUITE("SvpGIMP") {
           }
       }
   }
-  TEST_CASE("SvpGIMP: unity, reproduction, central differences and continuity for h = 0.3, 2, 7.5 on shifted grids") {
+  TEST_CASE("SvpGIMP: unity / reproduction / central differences / continuity for h = 0.3 / 2 / 7.5 on shifted grids") {
     for (int rep = 0; rep < 2; ++rep)
       for (double hh : {0.3, 2.0, 7.5})
         for (double a : {0.1, 0.37, 0.5}) {
@@ -348,7 +348,7 @@ TEST_SUITE("MPMbasis") {
       }
     }
   }
-  TEST_CASE("MPMbasis: cells of h_x != h_y, a shifted origin, nodes listed in reverse: S and dS by hand") {
+  TEST_CASE("MPMbasis: cells of h_x != h_y / a shifted origin / nodes listed in reverse: S and dS by hand") {
     // two grids in turn (twice): h = (0.5, 0.8) from the origin (-0.7, 1.9), 16 nodes, and
     // h = (2, 0.5) from 0, 15 nodes; the point lists the nodes in reverse order (nIN[v] != v);
     // reference: the hat and its domain average by hand (hatRef, hatAvgRef) in x times y
@@ -388,7 +388,7 @@ TEST_SUITE("MPMbasis") {
             CHECK(e.gradX <= 1e-12);
           }
   }
-  TEST_CASE("MPMbasis: a point linked to its own cell's four nodes only, in the order of the cell") {
+  TEST_CASE("MPMbasis: a point linked to its own cell's four nodes only (in the order of the cell)") {
     // h = (0.5, 0.8): the point (0.62, 1.13) lies in cell (1, 1) of 3 x 3; its nodes 5, 6, 10, 9
     const Mesh mesh = formCoord2D(3, 3, 1.5, 2.4);
     MaterialPoint mp;

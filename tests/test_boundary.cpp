@@ -107,7 +107,7 @@ TEST_SUITE("dirichletBand") {
                1e-14));
   }
 
-  TEST_CASE("dirichletBand: d = s (2 - s), d' = 2 (1 - s) / delta for band widths 0.5, 2, 1e-3, 3e-8 in turn") {
+  TEST_CASE("dirichletBand: d = s (2 - s) and d' = 2 (1 - s) / delta for band widths 0.5 / 2 / 1e-3 / 3e-8 in turn") {
     // s = phi/delta; d and d' continuous at phi = 0 and phi = delta (d = 0, 1; d' = 2/delta, 0
     // inside the band, 0 outside it); d' against central differences of d; 0 <= d <= 1, rising
     const double s[6] = {0.0, 0.1, 0.25, 0.5, 0.8, 1.0};

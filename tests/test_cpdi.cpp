@@ -238,7 +238,7 @@ TEST_SUITE("SvpCPDI2") {
     }
   }
 
-  TEST_CASE("SvpCPDI2: cpdi2Weights of a trapezoid by hand, and unchanged by translation, rotation and scaling") {
+  TEST_CASE("SvpCPDI2: cpdi2Weights of a trapezoid by hand / unchanged by translation / rotation / scaling") {
     // symmetric trapezoid, bottom width a = 2, top b = 1, height H: det J = (H/8)((a+b) + (b-a) eta),
     // J1 = 0, so w_c = 1/4 + eta_c (b-a) / (12 (a+b)) = 1/4 -+ 1/36: bottom corners 5/18, top 2/9
     Corners trap;

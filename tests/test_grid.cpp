@@ -167,7 +167,7 @@ TEST_SUITE("elemForMP") {
     CHECK_THROWS_AS(elemForMP(m, Vector2d(1.0, -0.1), Vector2d(0.2, 0.2), e), RunError);
     CHECK_THROWS_AS(elemForMP(m, Vector2d(-0.5, 5.0), Vector2d::Zero(), e), RunError);
   }
-  TEST_CASE("elemForMP: 6 x 3 cells of 0.5 x 2 from the origin (-1.2, 0.4): MPM and GIMP points") {
+  TEST_CASE("elemForMP: 6 x 3 cells of 0.5 x 2 from the origin x = -1.2 / y = 0.4: MPM and GIMP points") {
     // cell (i, j) is 6 j + i; vertical lines at -1.2 + 0.5 i, horizontal at 0.4 + 2 j
     Mesh m = formCoord2D(6, 3, 3.0, 6.0);
     m.origin = Vector2d(-1.2, 0.4);
@@ -193,7 +193,7 @@ TEST_SUITE("elemForMP") {
       CHECK(cellsOf(m, Vector2d(1.75, 0.45), Vector2d(0.1, 0.1)) == std::vector<int>{5});
     }
   }
-  TEST_CASE("elemForMP: the tolerance is in cell widths, for cells of 1e4 and of 1e-3") {
+  TEST_CASE("elemForMP: the tolerance is in cell widths for cells of 1e4 and of 1e-3") {
     const Mesh big = formCoord2D(3, 2, 3e4, 2e4), small = formCoord2D(3, 2, 3e-3, 2e-3);
     const Vector2d z = Vector2d::Zero();
     for (int rep = 0; rep < 2; ++rep) {

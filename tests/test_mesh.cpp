@@ -232,7 +232,7 @@ TEST_SUITE("cellBasis") {
   // measured: partition of unity and sum of gradients to < 3e-16 / 2e-15; linear
   // reproduction < 3e-16; central differences (step 1e-6) < 2e-10 on the triangles
   // and the distorted quads; Newton 3-5 passes on the distorted quads
-  TEST_CASE("cellBasis: partition of unity, linear reproduction and central-difference gradients") {
+  TEST_CASE("cellBasis: partition of unity / linear reproduction / central-difference gradients") {
     for (const Mesh& m : {distortedQuads(), asTriangles(formCoord2D(2, 2, 1.0, 1.0)),
                           asQuads(formCoord2D(2, 2, 1.0, 1.0))}) {
       CAPTURE(std::string(meshName(m)));
