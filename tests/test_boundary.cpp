@@ -107,6 +107,45 @@ TEST_SUITE("dirichletBand") {
                1e-14));
   }
 
+  TEST_CASE("dirichletBand: d = s (2 - s) and d' = 2 (1 - s) / delta for band widths 0.5 / 2 / 1e-3 / 3e-8 in turn") {
+    // s = phi/delta; d and d' continuous at phi = 0 and phi = delta (d = 0, 1; d' = 2/delta, 0
+    // inside the band, 0 outside it); d' against central differences of d; 0 <= d <= 1, rising
+    const double s[6] = {0.0, 0.1, 0.25, 0.5, 0.8, 1.0};
+    for (int rep = 0; rep < 2; ++rep)
+      for (double delta : {0.5, 2.0, 1e-3, 3e-8}) {
+        CAPTURE(delta);
+        for (double sk : s) {
+          CAPTURE(sk);
+          CHECK(near(dirichletD(sk * delta, delta), sk * (2 - sk), 1e-15));
+          CHECK(near(dirichletDPrime(sk * delta, delta) * delta, 2 * (1 - sk), 1e-14));
+        }
+        for (double f : {-0.3, -1e-3, -5.0}) {  // outside the solid
+          CHECK(dirichletD(f * delta, delta) == 0.0);
+          CHECK(dirichletDPrime(f * delta, delta) == 0.0);
+        }
+        for (double f : {1.2, 1.001, 5.0}) {  // beyond the band
+          CHECK(dirichletD(f * delta, delta) == 1.0);
+          CHECK(dirichletDPrime(f * delta, delta) == 0.0);
+        }
+        const double e = 1e-9 * delta;  // across phi = 0 (d' jumps to 2/delta) and phi = delta
+        CHECK(near(dirichletD(-e, delta), dirichletD(e, delta), 1e-8));
+        CHECK(near(dirichletDPrime(e, delta) * delta, 2.0, 1e-8));
+        CHECK(near(dirichletD(delta - e, delta), dirichletD(delta + e, delta), 1e-8));
+        CHECK(near(dirichletDPrime(delta - e, delta) * delta, dirichletDPrime(delta + e, delta) * delta, 1e-8));
+        double prev = -1.0;
+        for (int k = 1; k < 50; ++k) {
+          const double phi = (k / 50.0) * delta, step = 1e-6 * delta;
+          const double d = dirichletD(phi, delta);
+          CHECK(d >= 0.0);
+          CHECK(d <= 1.0);
+          CHECK(d > prev);
+          prev = d;
+          const double fd = (dirichletD(phi + step, delta) - dirichletD(phi - step, delta)) / (2 * step);
+          CHECK(near(fd * delta, dirichletDPrime(phi, delta) * delta, 1e-7));
+        }
+      }
+  }
+
   TEST_CASE("dirichletBand: band integrals by hand and by a fine trapezoidal rule") {
     for (double delta : {0.5, 1e-8}) {
       CAPTURE(delta);

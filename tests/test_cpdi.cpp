@@ -237,6 +237,61 @@ TEST_SUITE("SvpCPDI2") {
       }
     }
   }
+
+  TEST_CASE("SvpCPDI2: cpdi2Weights of a trapezoid by hand / unchanged by translation / rotation / scaling") {
+    // symmetric trapezoid, bottom width a = 2, top b = 1, height H: det J = (H/8)((a+b) + (b-a) eta),
+    // J1 = 0, so w_c = 1/4 + eta_c (b-a) / (12 (a+b)) = 1/4 -+ 1/36: bottom corners 5/18, top 2/9
+    Corners trap;
+    trap << 0.0, 2.0, 1.5, 0.5,  //
+        0.0, 0.0, 0.7, 0.7;
+    const Eigen::Vector4d wTrap(5.0 / 18, 5.0 / 18, 2.0 / 9, 2.0 / 9);
+    // the same trapezoid turned by 90 degrees, corners in the same order: the same weights
+    Corners side;
+    side << 0.0, 0.0, -0.7, -0.7,  //
+        0.0, 2.0, 1.5, 0.5;
+    // rotating the corner list (corner 1 first) rotates the weights
+    Corners shifted;
+    shifted << 2.0, 1.5, 0.5, 0.0,  //
+        0.0, 0.7, 0.7, 0.0;
+    const Eigen::Vector4d wShifted(5.0 / 18, 2.0 / 9, 2.0 / 9, 5.0 / 18);
+    const Corners q = distortedQuad();
+    const Eigen::Vector4d wq = gaussAverages(q, Eigen::Vector4d::Zero()).w;
+    const double ang = 0.61, c = std::cos(ang), sn = std::sin(ang);
+    Eigen::Matrix2d R;
+    R << c, -sn, sn, c;
+    for (int rep = 0; rep < 2; ++rep) {
+      CHECK((cpdi2Weights(trap) - wTrap).norm() <= 1e-14);
+      CHECK((cpdi2Weights(side) - wTrap).norm() <= 1e-14);
+      CHECK((cpdi2Weights(shifted) - wShifted).norm() <= 1e-14);
+      for (double scale : {1.0, 3.7, 2e-3}) {  // the distorted quad moved, turned and scaled
+        CAPTURE(scale);
+        const Corners moved = ((scale * R * q).colwise() + Vector2d(12.5, -7.25));
+        CHECK((cpdi2Weights(moved) - wq).norm() <= 1e-12);
+        CHECK((cpdi2Weights(scale * trap) - wTrap).norm() <= 1e-13);
+      }
+    }
+  }
+
+  TEST_CASE("SvpCPDI2: value equals the domain average for quadrilaterals of different shapes in turn") {
+    // a kite, a trapezoid and a strongly distorted convex quad; corner values chosen freely
+    Corners kite, trap, q3;
+    kite << 0.0, 1.0, 0.0, -1.0,  //
+        -0.5, 0.0, 2.0, 0.0;
+    trap << 0.0, 2.0, 1.5, 0.5,  //
+        0.0, 0.0, 0.7, 0.7;
+    q3 << 0.1, 3.0, 2.2, -0.4,  //
+        0.2, 0.6, 1.9, 1.1;
+    const Eigen::Vector4d Sc(0.3, -1.2, 2.5, 0.7);
+    for (int rep = 0; rep < 2; ++rep)
+      for (const Corners& x : {kite, trap, q3}) {
+        CAPTURE(x);
+        REQUIRE(quadArea(x) > 0);
+        const QuadAverages a = gaussAverages(x, Sc);
+        CHECK(std::abs(SvpCPDI2(Sc, x).S - a.S) <= 1e-13);
+        CHECK((cpdi2Weights(x) - gaussAverages(x, Eigen::Vector4d::Zero()).w).norm() <= 1e-13);
+        CHECK(std::abs(cpdi2Weights(x).sum() - 1.0) <= 1e-14);
+      }
+  }
 }
 
 TEST_SUITE("SvpCPDI1") {

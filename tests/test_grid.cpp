@@ -167,6 +167,59 @@ TEST_SUITE("elemForMP") {
     CHECK_THROWS_AS(elemForMP(m, Vector2d(1.0, -0.1), Vector2d(0.2, 0.2), e), RunError);
     CHECK_THROWS_AS(elemForMP(m, Vector2d(-0.5, 5.0), Vector2d::Zero(), e), RunError);
   }
+  TEST_CASE("elemForMP: 6 x 3 cells of 0.5 x 2 from the origin x = -1.2 / y = 0.4: MPM and GIMP points") {
+    // cell (i, j) is 6 j + i; vertical lines at -1.2 + 0.5 i, horizontal at 0.4 + 2 j
+    Mesh m = formCoord2D(6, 3, 3.0, 6.0);
+    m.origin = Vector2d(-1.2, 0.4);
+    m.coord.rowwise() += m.origin.transpose();
+    const Vector2d z = Vector2d::Zero();
+    for (int rep = 0; rep < 2; ++rep) {
+      CHECK(cellsOf(m, Vector2d(-0.05, 3.6), z) == std::vector<int>{8});     // inside (2, 1)
+      CHECK(cellsOf(m, Vector2d(0.8, 5.4), z) == std::vector<int>{15});      // on x = 0.8: left
+      CHECK(cellsOf(m, Vector2d(-0.95, 4.4), z) == std::vector<int>{6});     // on y = 4.4: below
+      CHECK(cellsOf(m, Vector2d(-0.95, 4.4 + 1e-15), z) == std::vector<int>{6});
+      CHECK(cellsOf(m, Vector2d(-0.95, 4.4 + 1e-6), z) == std::vector<int>{12});  // really above
+      CHECK(cellsOf(m, Vector2d(0.8 - 1e-15, 2.4 + 1e-15), z) == std::vector<int>{3});  // a corner
+      CHECK(cellsOf(m, Vector2d(0.8 + 1e-6, 2.4 + 1e-6), z) == std::vector<int>{10});
+      CHECK(cellsOf(m, Vector2d(1.8, 6.4), z) == std::vector<int>{17});      // top right corner
+      CHECK(cellsOf(m, Vector2d(-1.2, 0.4), z) == std::vector<int>{0});      // bottom left corner
+      // GIMP: [0.75, 0.95] x [2.7, 3.3] across x = 0.8
+      CHECK(cellsOf(m, Vector2d(0.85, 3.0), Vector2d(0.1, 0.3)) == std::vector<int>{9, 10});
+      // [0.3, 0.8] x [2.4, 4.4] fills cell (3, 1) exactly
+      CHECK(cellsOf(m, Vector2d(0.55, 3.4), Vector2d(0.25, 1.0)) == std::vector<int>{9});
+      // [-0.5, -0.1] x [4.0, 4.6] across y = 4.4 (and inside columns 1, 2)
+      CHECK(cellsOf(m, Vector2d(-0.3, 4.3), Vector2d(0.2, 0.3)) == std::vector<int>{7, 8, 13, 14});
+      // [1.65, 1.85] x [0.35, 0.55]: past the right and bottom edges
+      CHECK(cellsOf(m, Vector2d(1.75, 0.45), Vector2d(0.1, 0.1)) == std::vector<int>{5});
+    }
+  }
+  TEST_CASE("elemForMP: the tolerance is in cell widths for cells of 1e4 and of 1e-3") {
+    const Mesh big = formCoord2D(3, 2, 3e4, 2e4), small = formCoord2D(3, 2, 3e-3, 2e-3);
+    const Vector2d z = Vector2d::Zero();
+    for (int rep = 0; rep < 2; ++rep) {
+      // 1e-7 on cells of 1e4 is 1e-11 cells: on the line x = 1e4, the cell to the left
+      CHECK(cellsOf(big, Vector2d(1e4 + 1e-7, 5e3), z) == std::vector<int>{0});
+      CHECK(cellsOf(big, Vector2d(1e4 + 1e-3, 5e3), z) == std::vector<int>{1});  // 1e-7 cells: right
+      CHECK(cellsOf(big, Vector2d(5e3, 1e4 + 1e-7), z) == std::vector<int>{0});
+      CHECK(cellsOf(big, Vector2d(2.5e4, 1e4 + 1e-3), z) == std::vector<int>{5});
+      // 1e-10 on cells of 1e-3 is 1e-7 cells: right of the line x = 1e-3; 1e-15 is on it
+      CHECK(cellsOf(small, Vector2d(1e-3 + 1e-10, 0.5e-3), z) == std::vector<int>{1});
+      CHECK(cellsOf(small, Vector2d(1e-3 + 1e-15, 0.5e-3), z) == std::vector<int>{0});
+      CHECK(cellsOf(small, Vector2d(2.5e-3, 1e-3 + 1e-10), z) == std::vector<int>{5});
+      CHECK(cellsOf(small, Vector2d(2.5e-3, 1e-3 - 1e-16), z) == std::vector<int>{2});
+      // GIMP: a domain overlapping a cell by 1e-7 cells has it; one touching it has not
+      CHECK(cellsOf(small, Vector2d(1.5e-3, 0.5e-3), Vector2d(0.5e-3 + 1e-10, 0.2e-3)) ==
+            std::vector<int>{0, 1, 2});
+      CHECK(cellsOf(small, Vector2d(1.5e-3, 0.5e-3), Vector2d(0.5e-3, 0.2e-3)) == std::vector<int>{1});
+      CHECK(cellsOf(big, Vector2d(1.5e4, 5e3), Vector2d(0.5e4 + 1e-7, 2e3)) == std::vector<int>{1});
+      CHECK(cellsOf(big, Vector2d(1.5e4, 5e3), Vector2d(0.5e4 + 1e-3, 2e3)) == std::vector<int>{0, 1, 2});
+    }
+  }
+  TEST_CASE("elemForMP: a GIMP domain narrower than the tolerance on a grid line has one cell") {
+    const Mesh m = formCoord2D(4, 4, 4.0, 4.0);
+    CHECK(cellsOf(m, Vector2d(2.0, 1.5), Vector2d(1e-12, 0.1)) == std::vector<int>{6});
+    CHECK(cellsOf(m, Vector2d(1.5, 3.0), Vector2d(0.1, 1e-12)) == std::vector<int>{13});
+  }
 }
 
 TEST_SUITE("nodesForMP") {

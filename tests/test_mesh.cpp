@@ -232,7 +232,7 @@ TEST_SUITE("cellBasis") {
   // measured: partition of unity and sum of gradients to < 3e-16 / 2e-15; linear
   // reproduction < 3e-16; central differences (step 1e-6) < 2e-10 on the triangles
   // and the distorted quads; Newton 3-5 passes on the distorted quads
-  TEST_CASE("cellBasis: partition of unity, linear reproduction and central-difference gradients") {
+  TEST_CASE("cellBasis: partition of unity / linear reproduction / central-difference gradients") {
     for (const Mesh& m : {distortedQuads(), asTriangles(formCoord2D(2, 2, 1.0, 1.0)),
                           asQuads(formCoord2D(2, 2, 1.0, 1.0))}) {
       CAPTURE(std::string(meshName(m)));
@@ -311,6 +311,77 @@ TEST_SUITE("cellBasis") {
     MESSAGE("grid vs general quads: |dS| ", dS, ", |d grad S| ", dG);
     CHECK(dS <= 1e-15);
     CHECK(dG <= 1e-13);
+  }
+  TEST_CASE("cellBasis: scalene triangles of different areas: N and grad N against the barycentric system solved by hand") {
+    // three anticlockwise triangles (2A = 3.43, 3.56, 2.78), none right-angled or axis-aligned
+    Eigen::MatrixX2d coord(5, 2);
+    coord << 0.2, -0.1, 2.3, 0.4, 0.9, 1.7, 3.1, 2.2, -0.8, 1.3;
+    Eigen::MatrixXi tri(3, 3);
+    tri << 0, 1, 2, 1, 3, 2, 0, 2, 4;
+    const Mesh m = generalMesh(coord, tri);
+    const double twoA[3] = {3.43, 3.56, 2.78};
+    const double r[5][2] = {{0.2, 0.3}, {0.61, 0.17}, {0.05, 0.9}, {0.33, 0.33}, {0.7, 0.02}};
+    for (int rep = 0; rep < 2; ++rep)
+      for (int e = 0; e < 3; ++e) {
+        CAPTURE(e);
+        // [1 1 1; x0 x1 x2; y0 y1 y2] N = [1; x; y]: N = M^-1 [1; x; y], grad N_a = row a of M^-1, cols 1-2
+        Eigen::Matrix3d M;
+        for (int a = 0; a < 3; ++a)
+          M.col(a) << 1.0, m.coord(m.etpl(e, a), 0), m.coord(m.etpl(e, a), 1);
+        CHECK(std::abs(M.determinant() - twoA[e]) <= 1e-12);
+        const Eigen::Matrix3d Minv = M.inverse();
+        for (const auto& rr : r) {  // x = X0 + r0 (X1 - X0) + r1 (X2 - X0): N1 = r0, N2 = r1
+          const Vector2d X0 = m.coord.row(m.etpl(e, 0)).transpose();
+          const Vector2d x = X0 + rr[0] * (m.coord.row(m.etpl(e, 1)).transpose() - X0) +
+                             rr[1] * (m.coord.row(m.etpl(e, 2)).transpose() - X0);
+          CAPTURE(x.transpose());
+          const CellBasis b = cellBasis(m, e, x);
+          const Eigen::Vector3d N = Minv * Eigen::Vector3d(1.0, x(0), x(1));
+          CHECK(std::abs(N(1) - rr[0]) <= 1e-14);
+          CHECK(std::abs(N(2) - rr[1]) <= 1e-14);
+          double S = 0;
+          Vector2d X = Vector2d::Zero(), G = Vector2d::Zero();
+          for (int a = 0; a < 3; ++a) {
+            CAPTURE(a);
+            CHECK(std::abs(b.N[a] - N(a)) <= 1e-14);
+            CHECK(std::abs(b.dN(0, a) - Minv(a, 1)) <= 1e-13);
+            CHECK(std::abs(b.dN(1, a) - Minv(a, 2)) <= 1e-13);
+            S += b.N[a], G += b.dN.col(a), X += b.N[a] * m.coord.row(m.etpl(e, a)).transpose();
+            const double d = 1e-6;
+            for (int i = 0; i < 2; ++i) {
+              Vector2d xp = x, xm = x;
+              xp(i) += d, xm(i) -= d;
+              CHECK(std::abs((cellBasis(m, e, xp).N[a] - cellBasis(m, e, xm).N[a]) / (2 * d) - b.dN(i, a)) <= 1e-8);
+            }
+          }
+          CHECK(std::abs(S - 1.0) <= 1e-14);
+          CHECK(G.norm() <= 1e-13);
+          CHECK((X - x).norm() <= 1e-14);
+          CHECK((b.xi - Vector2d(rr[0], rr[1])).norm() <= 1e-14);
+        }
+      }
+  }
+  TEST_CASE("cellBasis: a point on a triangle's edge gives the node off that edge exactly N = 0") {
+    // 200 points along each edge of the scalene triangles: the round-off of the position must
+    // not leave N = 1e-17 (or -1e-17) for the opposite node (dropNullNodes, detFDoFs test N == 0)
+    Eigen::MatrixX2d coord(5, 2);
+    coord << 0.2, -0.1, 2.3, 0.4, 0.9, 1.7, 3.1, 2.2, -0.8, 1.3;
+    Eigen::MatrixXi tri(3, 3);
+    tri << 0, 1, 2, 1, 3, 2, 0, 2, 4;
+    const Mesh m = generalMesh(coord, tri);
+    int nonZero = 0;
+    for (int e = 0; e < 3; ++e)
+      for (int a = 0; a < 3; ++a) {  // the edge from node a + 1 to node a + 2, opposite node a
+        const Vector2d P = m.coord.row(m.etpl(e, (a + 1) % 3)).transpose();
+        const Vector2d Q = m.coord.row(m.etpl(e, (a + 2) % 3)).transpose();
+        for (int k = 1; k < 200; ++k) {
+          const double s = k / 200.0 + 1e-3 / 7;
+          const CellBasis b = cellBasis(m, e, P + s * (Q - P));
+          if (b.N[a] != 0.0) ++nonZero;
+          CHECK(std::abs(b.N[a]) <= 1e-14);
+        }
+      }
+    CHECK(nonZero == 0);
   }
 }
 
