@@ -2,24 +2,33 @@
 #--------------------------------------------------------------------------
 # check_student.sh — the student copy's tests fail only where they should
 #--------------------------------------------------------------------------
-# Runs ctest (-j2, the default labels) in the build folder of a student copy
-# (tools/make_student_version.sh) and checks what docs/exercises.md promises:
+# Builds ample and ample_tests in the build folder of a student copy
+# (tools/make_student_version.sh; -j2, make's [ NN%] lines shown, the whole
+# output in BUILD/build_student.log), runs every CTest test there (ctest -j2)
+# and checks what docs/exercises.md promises:
 #   - the only failing tests are test cases of an exercise's own suite that
 #     reached a blanked exercise, each with exactly one "FAILED: exercise" line;
 #   - every other test passes or is skipped with "needs exercise X" (the
 #     setup runs included);
 #   - every exercise has at least one failing test naming it.
-# Prints the count per exercise and the time.
-#   tools/check_student.sh STUDENT_BUILD_DIR
-# Exit status: 0 as promised, 1 not, 2 usage error. Run by .ci/run.
+# Prints the count per exercise and the times.
+#   tools/check_student.sh STUDENT_BUILD_DIR    # configured: cmake -S COPY -B STUDENT_BUILD_DIR
+# Exit status: 0 as promised, 1 not (or the build failed), 2 usage error. Run by .ci/run.
 #--------------------------------------------------------------------------
 set -uo pipefail
-[ $# -eq 1 ] && [ -f "$1/CTestTestfile.cmake" ] || { sed -n '2,15p' "$0"; exit 2; }
+[ $# -eq 1 ] && [ -f "$1/CTestTestfile.cmake" ] || { sed -n '2,17p' "$0"; exit 2; }
 BUILD=$(cd "$1" && pwd)
 SRC=$(sed -n 's/^CMAKE_HOME_DIRECTORY:INTERNAL=//p' "$BUILD/CMakeCache.txt")
 [ -f "$SRC/STUDENT.md" ] || { echo "$SRC is no student copy (no STUDENT.md)"; exit 2; }
 LOG=$BUILD/exercise_log.tsv OUT=$BUILD/ctest_student.log
 rm -f "$LOG"
+start=$(date +%s)
+echo "check_student: building ample and ample_tests of $SRC in $BUILD (-j2; from clean a few minutes)"
+cmake --build "$BUILD" -j2 --target ample ample_tests 2>&1 | tee "$BUILD/build_student.log" |
+  grep --line-buffered -E '^\[ *[0-9]+%\] (Building|Linking)'
+[ "${PIPESTATUS[0]}" -eq 0 ] ||
+  { echo "check_student: the build failed ($BUILD/build_student.log):"; grep -m5 -E 'error' "$BUILD/build_student.log"; exit 1; }
+echo "check_student: built in $(( $(date +%s) - start )) s; running ctest -j2 in $BUILD (every test of the copy)"
 start=$(date +%s)
 (cd "$BUILD" && AMPLE_EXERCISE_LOG=$LOG ctest -j2 --output-on-failure > "$OUT" 2>&1)
 secs=$(( $(date +%s) - start ))

@@ -17,6 +17,9 @@
 #   tools/grading.sh VMconst SvpGIMP # some of them
 #   tools/grading.sh --list          # the wrong answers, with their first comment line
 # Environment: AMPLE_GRADING_DIR  work folder (default /tmp/ample-grading-$USER)
+# Progress: the first build of the work folder (the whole tree, a few minutes on 2 cores) shows
+# make's [ NN%] lines; then one line per wrong answer as it is built and run (a few seconds each).
+# Instructor's tree only: the student copy has neither this script nor tools/wrong_answers.
 # Exit status: 0 every wrong answer rejected, 1 some accepted (or did not build), 2 setup error
 # Not part of the default ctest: configure with -DAMPLE_GRADING=ON to get the
 # CTest test "grading" (label grading). Documented in docs/exercises.md.
@@ -35,12 +38,17 @@ if [ "${1:-}" = --list ]; then
   done
   exit 0
 fi
-[ "${1:-}" = -h ] || [ "${1:-}" = --help ] && { sed -n '2,24p' "$0"; exit 0; }
+[ "${1:-}" = -h ] || [ "${1:-}" = --help ] && { sed -n '2,27p' "$0"; exit 0; }
 SELECT=${*:-$EXERCISES}
 
 mkdir -p "$WORK/src" "$WORK/build" || exit 2
 "$SRC/tools/sync_tree.sh" "$SRC" "$WORK/src"
 build() { cmake --build "$WORK/build" -j2 --target ample_tests >"$WORK/build.log" 2>&1; }
+build_shown() {  # the same, with make's [ NN%] lines shown
+  cmake --build "$WORK/build" -j2 --target ample_tests 2>&1 | tee "$WORK/build.log" |
+    grep --line-buffered -E '^\[ *[0-9]+%\] (Building|Linking)' | sed -u 's/^/  /'
+  return "${PIPESTATUS[0]}"
+}
 suite() {  # the suite of exercise $1; $WORK/cases.tsv: status, suite, exercise, case (main_tests.cpp)
   rm -f "$WORK/cases.tsv"
   (cd "$WORK/build/tests" &&
@@ -51,13 +59,17 @@ if [ ! -f "$WORK/build/CMakeCache.txt" ]; then
     { echo "configure failed: $WORK/configure.log"; exit 2; }
 fi
 echo "grading check: tree $SRC, work folder $WORK"
-build || { echo "the tree does not build: $WORK/build.log"; exit 2; }
+echo "building ample_tests in $WORK/build (Release, -j2; only what changed since its last run)"
+start=$(date +%s)
+build_shown || { echo "the tree does not build: $WORK/build.log"; exit 2; }
+echo "built in $(( $(date +%s) - start )) s; the suites on the solution:"
 for x in $SELECT; do
   suite "$x" || { echo "the suite $x fails on the solution: $WORK/tests.log"; exit 2; }
 done
-echo "solution: the suites of $(echo $SELECT | wc -w) exercises pass"
+echo "solution: the suites of $(echo $SELECT | wc -w) exercises pass; each wrong answer: paste, rebuild ample_tests, run its suite"
 
-status=0 total=0 rejected=0
+status=0 total=0 rejected=0 clr=""
+[ -t 1 ] && clr=$'\033[K'   # on a terminal: "building..." shown while each one builds, then erased
 for x in $SELECT; do
   file=$(cd "$WORK/src" && grep -rlE "^[[:space:]]*// BEGIN EXERCISE $x[[:space:]]*\$" ample constitutive | head -1)
   [ -n "$file" ] || { echo "$x: no region in the tree"; status=1; continue; }
@@ -67,6 +79,7 @@ for x in $SELECT; do
     name=$([ "$w" = stub ] && echo "(student stub)" || basename "$w" .inc)
     cp "$target" "$WORK/original"
     "$SRC/tools/make_student_version.sh" --fill "$target" "$x" "$w" || { status=1; continue; }
+    [ -t 1 ] && printf '%-14s %-22s building...\r' "$x" "$name"
     start=$(date +%s) detail=""
     total=$((total + 1))
     if ! build; then
@@ -80,7 +93,7 @@ for x in $SELECT; do
       detail+=$(awk -F'\t' '$1 != "pass" {print $4}' "$WORK/cases.tsv" | head -2 | paste -sd ';' -)
     fi
     cp "$WORK/original" "$target"   # restored with a new time: it recompiles next time
-    printf '%-14s %-22s %-11s %4ss  %s\n' "$x" "$name" "$verdict" "$(( $(date +%s) - start ))" "$detail"
+    printf '%-14s %-22s %-11s %4ss  %s%s\n' "$x" "$name" "$verdict" "$(( $(date +%s) - start ))" "$detail" "$clr"
   done
 done
 build >/dev/null 2>&1   # leave the build folder matching the tree

@@ -24,13 +24,21 @@
 # either not exist or hold an earlier student copy (it is then rewritten).
 # The files copied are git's (tracked and untracked, not ignored) when the tree
 # is a git checkout, else every file but build/ and .git.
+# The instructor's material is left out of the copy (INSTRUCTOR_ONLY below: the
+# wrong answers, each a solution with one change, the mutation check, whose
+# substitutions quote solutions, and the scripts that need them); --check
+# ignores it. tools/check_leak.sh DIR checks that no solution is left in DIR.
 # Exit status: 0 done (--check: identical), 1 --check found a difference, 2 usage error
-# Checked by .ci/run (both directions); documented in docs/exercises.md.
+# Checked by .ci/run (both directions, and check_leak.sh); documented in docs/exercises.md.
 #--------------------------------------------------------------------------
 set -euo pipefail
 SRC=$(cd "$(dirname "$0")/.." && pwd)
 MARK='^[[:space:]]*// BEGIN EXERCISE [A-Za-z0-9_]+[[:space:]]*$'
-usage() { sed -n '2,28p' "$0"; exit 2; }
+usage() { sed -n '2,32p' "$0"; exit 2; }
+
+# the instructor's files and folders: not in the student copy (docs/exercises.md)
+INSTRUCTOR_ONLY=(tools/wrong_answers tools/grading.sh tools/mutants.sh tools/sync_tree.sh tools/check_leak.sh
+                 tools/leak_known.txt)
 
 # the files of a tree that hold regions
 region_files() { (cd "$1" && grep -rlE "$MARK" ample constitutive setups plotting 2>/dev/null | sort) || true; }
@@ -80,9 +88,9 @@ bodies() {
     /^[ \t]*\/\/ BEGIN EXERCISE / && (name == "*" || $4 == name) { if (n++) print "// NEXT REGION"; inside = 1 }' "$1"
 }
 
-# copy_tree FROM TO: the tree's files (no build/, no .git)
+# copy_tree FROM TO: the tree's files (no build/, no .git), less the instructor's
 copy_tree() {
-  local from=$1 to=$2
+  local from=$1 to=$2 p
   mkdir -p "$to"
   if git -C "$from" rev-parse --is-inside-work-tree >/dev/null 2>&1; then
     (cd "$from" && git ls-files -co --exclude-standard -z | while IFS= read -r -d '' f; do
@@ -90,10 +98,11 @@ copy_tree() {
   else
     (cd "$from" && tar --exclude=./build --exclude=./.git -cf - .) | tar -C "$to" -xf -
   fi
+  for p in "${INSTRUCTOR_ONLY[@]}"; do rm -rf "${to:?}/$p"; done
 }
 
-exercises() {  # name file lines, one region a line
-  (cd "$SRC" && for f in $(region_files .); do
+exercises() {  # name file lines, one region a line, of the tree (or of the copy $1)
+  (cd "${1:-$SRC}" && for f in $(region_files .); do
      awk -v f="$f" '/^[ \t]*\/\/ BEGIN EXERCISE /{n=$4; s=NR} /^[ \t]*\/\/ END EXERCISE/{printf "%-14s %-26s %d-%d\n", n, f, s, NR}' "$f"
    done)
 }
@@ -120,10 +129,29 @@ says what to implement, the equations and the command that grades it
 Until an exercise is done, its suite fails with one line naming it, and every other
 test or run that needs it is skipped with "needs exercise name".
 
-| exercise | file | lines |
-|---|---|---|
-$(exercises | awk '{printf "| [%s](docs/exercises.md#%s) | %s | %s |\n", $1, $1, $2, $3}')
+In course order (the table of docs/exercises.md: an exercise's suite can be graded once
+the exercises above it that it calls are done):
+
+| week | exercise | what | file | lines |
+|---|---|---|---|---|
+$(course_order "$dir" | awk -F'\t' '{printf "| %s | [%s](docs/exercises.md#%s) | %s | %s | %s |\n", $2, $1, $1, $3, $4, $5}')
 EOF
+}
+
+# course_order: name, week, what, file, lines (tab-separated), one region a line, in the order of
+# the table of docs/exercises.md ("| week | [name](#name) | what | ..."); exercises not in it last
+course_order() {
+  exercises "${1:-$SRC}" | awk -v doc="$SRC/docs/exercises.md" '
+    BEGIN {
+      while ((getline l < doc) > 0)
+        if (l ~ /^\| *[0-9]+ *\| *\[[A-Za-z0-9_]+\]/) {
+          split(l, c, "|"); n = c[3]; sub(/^ *\[/, "", n); sub(/\].*/, "", n)
+          w = c[2]; gsub(/ /, "", w); what = c[4]; sub(/^ +/, "", what); sub(/ +$/, "", what)
+          if (!(n in rank)) { rank[n] = ++k; week[n] = w; desc[n] = what }
+        }
+    }
+    { r = ($1 in rank) ? rank[$1] : 1000; printf "%04d\t%04d\t%s\t%s\t%s\t%s\t%s\n", r, NR, $1, week[$1], desc[$1], $2, $3 }' |
+    sort | cut -f3-
 }
 
 case "${1:-}" in
@@ -138,7 +166,7 @@ case "${1:-}" in
     restore "$tmp/s"
     copy_tree "$SRC" "$tmp/t"
     if diff -r "$tmp/t" "$tmp/s" > "$tmp/diff"; then
-      echo "student copy $2 with the $(exercises | wc -l) regions pasted back: identical to $SRC"
+      echo "student copy $2 with the $(exercises | wc -l) regions pasted back: identical to $SRC (less ${INSTRUCTOR_ONLY[*]})"
     else
       echo "student copy $2 with the regions pasted back differs from $SRC:"; head -40 "$tmp/diff"; exit 1
     fi ;;
