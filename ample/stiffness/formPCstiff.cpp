@@ -11,14 +11,16 @@ Matrix9d formPCstiff(const Matrix3d& dF, double Jn, const Matrix6d& D, const Mat
                      const Matrix3d& bEn, const Matrix3d& BeT) {
   constexpr int voigt[3][3] = {{0, 3, 5}, {3, 1, 4}, {5, 4, 2}};
   const Matrix3d bFt = bEn * dF.transpose(), Fb = dF * bEn, iF = dF.inverse();
-  Matrix9d D9, Bt;
+  Eigen::Matrix<double, 6, 9> P = Eigen::Matrix<double, 6, 9>::Zero();  // tensor ij -> Voigt row
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j) P(voigt[i][j], 3 * i + j) = 1.0;
+  const Matrix9d D9 = P.transpose() * D * P;                                           // D_ijkl
+  Matrix9d Bt;
   for (int i = 0; i < 3; ++i)
     for (int j = 0; j < 3; ++j)
       for (int k = 0; k < 3; ++k)
-        for (int l = 0; l < 3; ++l) {
-          D9(3 * i + j, 3 * k + l) = D(voigt[i][j], voigt[k][l]);
+        for (int l = 0; l < 3; ++l)
           Bt(3 * i + j, 3 * k + l) = (i == k ? bFt(l, j) : 0.0) + (j == k ? Fb(i, l) : 0.0);  // A.5
-        }
   const Matrix9d T = 0.5 * D9 * dLogdB(BeT) * Bt;                                       // A.4
   Matrix9d A = Matrix9d::Zero();
   for (int i = 0; i < 3; ++i)
