@@ -7,6 +7,7 @@
 #include <cmath>
 
 using namespace ample;
+using Matrix3d = Eigen::Matrix3d;
 
 namespace {
 const Vector3d mCst(1e6, 0.3, 2e4);  // E, nu, rho_y
@@ -49,6 +50,19 @@ Vector6d plasticStrain() {
 // shears = half the engineering ones) [0.07 -0.08 0.01 | 0.0225 -0.015 0.03], |e|^2 =
 // 0.0114 + 2 * 0.00163125 = 0.0146625, rho_tr = 2G |e| = 93145.23875624873 Pa
 const double rhoTrial = 93145.23875624873, thetaHand = rhoY / rhoTrial;
+
+// D by hand from lambda and G (the closed forms below), Voigt [xx yy zz xy yz zx],
+// engineering shears
+Matrix6d isoD(double E, double nu) {
+  const double l = E * nu / ((1 + nu) * (1 - 2 * nu)), g = E / (2 * (1 + nu));
+  Matrix6d D = Matrix6d::Zero();
+  for (int i = 0; i < 3; ++i) {
+    for (int j = 0; j < 3; ++j) D(i, j) = l;
+    D(i, i) = l + 2 * g;
+    D(i + 3, i + 3) = g;
+  }
+  return D;
+}
 }  // namespace
 
 TEST_SUITE("Hooke3d") {
@@ -143,5 +157,211 @@ TEST_SUITE("VMconst") {
     CHECK(nDm.norm() <= 1e-10 * o.D.norm());
     // while the mean stress still responds elastically: m' D = 3K m'
     CHECK((m1().transpose() * o.D).norm() == doctest::Approx(3 * K * std::sqrt(3.0)).epsilon(1e-12));
+  }
+}
+
+// Two more materials, and the properties that hold for every one: the suites call the
+// functions with each in turn (an answer that keeps the first material's D, e.g. in a
+// static, fails), rotate the strain (isotropy), and check sums and limits by hand.
+TEST_SUITE("Hooke3d") {
+  // [E, nu, rho_y]: a soft, nearly compressible one and a stiff, nearly incompressible one
+  const Vector3d matA(2e5, 0.2, 1e3), matB(7e7, 0.45, 3e5);
+
+  // a strain 6-vector (engineering shears) as a tensor and a stress tensor as a 6-vector
+  Matrix3d strainTensor(const Vector6d& e) {
+    Matrix3d t;
+    t << e(0), e(3) / 2, e(5) / 2, e(3) / 2, e(1), e(4) / 2, e(5) / 2, e(4) / 2, e(2);
+    return t;
+  }
+  Vector6d strainVector(const Matrix3d& t) {
+    Vector6d e;
+    e << t(0, 0), t(1, 1), t(2, 2), 2 * t(0, 1), 2 * t(1, 2), 2 * t(2, 0);
+    return e;
+  }
+  Matrix3d stressTensor(const Vector6d& s) {
+    Matrix3d t;
+    t << s(0), s(3), s(5), s(3), s(1), s(4), s(5), s(4), s(2);
+    return t;
+  }
+  Matrix3d rotation3(double a, double b, double c) {  // about z by a, y by b, x by c
+    Matrix3d Rz, Ry, Rx;
+    Rz << std::cos(a), -std::sin(a), 0, std::sin(a), std::cos(a), 0, 0, 0, 1;
+    Ry << std::cos(b), 0, std::sin(b), 0, 1, 0, -std::sin(b), 0, std::cos(b);
+    Rx << 1, 0, 0, 0, std::cos(c), -std::sin(c), 0, std::sin(c), std::cos(c);
+    return Rx * Ry * Rz;
+  }
+  Vector6d generalStrain() {
+    Vector6d e;
+    e << 2e-3, -1e-3, 5e-4, 3e-3, -1.5e-3, 8e-4;
+    return e;
+  }
+
+  TEST_CASE("Hooke3d: two materials in turn, each with its own D and stress (by hand), none kept from an earlier call") {
+    const Vector6d eps = generalStrain();
+    // the default material first, then A, B and A again: each answer only from its own E, nu
+    for (const Vector3d& m : {mCst, matA, matB, matA, mCst, matB}) {
+      CAPTURE(m(0));
+      CAPTURE(m(1));
+      const Matrix6d Dh = isoD(m(0), m(1));
+      CHECK((elasticStiffness(m(0), m(1)) - Dh).norm() <= 1e-12 * Dh.norm());
+      const ConstOut o = Hooke3d(eps, m);
+      CHECK((o.D - Dh).norm() <= 1e-12 * Dh.norm());
+      // tau = lambda tr(eps) 1 + 2G eps (tensor shears), written out
+      const double l = m(0) * m(1) / ((1 + m(1)) * (1 - 2 * m(1))), g = m(0) / (2 * (1 + m(1)));
+      const double tr = eps(0) + eps(1) + eps(2);
+      Vector6d tau;
+      tau << l * tr + 2 * g * eps(0), l * tr + 2 * g * eps(1), l * tr + 2 * g * eps(2), g * eps(3), g * eps(4),
+          g * eps(5);
+      CHECK((o.Ksig - tau).norm() <= 1e-12 * tau.norm());
+      CHECK(o.epsE == eps);
+    }
+  }
+  TEST_CASE("Hooke3d: isotropic: the stress of a rotated strain is the rotated stress (two materials, two rotations)") {
+    for (const Vector3d& m : {matB, matA})
+      for (const Matrix3d& Q : {rotation3(0.3, -0.7, 1.1), rotation3(-1.2, 0.4, 0.25)}) {
+        const Vector6d eps = generalStrain();
+        const Matrix3d tau = stressTensor(Hooke3d(eps, m).Ksig);
+        const Vector6d epsR = strainVector(Q * strainTensor(eps) * Q.transpose());
+        const Matrix3d tauR = stressTensor(Hooke3d(epsR, m).Ksig);
+        CHECK((tauR - Q * tau * Q.transpose()).norm() <= 1e-12 * tau.norm());
+      }
+  }
+  TEST_CASE("Hooke3d: the stored energy eps.D.eps = lambda tr^2 + 2G eps:eps > 0 / rho_y plays no part / the stress is linear in the strain") {
+    const Vector6d e1 = generalStrain();
+    Vector6d e2;
+    e2 << -4e-4, 1e-3, 2e-3, -6e-4, 2e-4, 1e-3;
+    for (const Vector3d& m : {matA, matB}) {
+      const double l = m(0) * m(1) / ((1 + m(1)) * (1 - 2 * m(1))), g = m(0) / (2 * (1 + m(1)));
+      const Matrix3d t = strainTensor(e1);
+      const double W = l * t.trace() * t.trace() + 2 * g * (t.array() * t.array()).sum();
+      const ConstOut o = Hooke3d(e1, m);
+      CHECK(e1.dot(o.Ksig) == doctest::Approx(W).epsilon(1e-12));
+      CHECK(W > 0.0);
+      Vector3d other = m;
+      other(2) *= 7.0;  // another yield stress: an elastic law ignores it
+      CHECK((Hooke3d(e1, other).Ksig - o.Ksig).norm() <= 1e-14 * o.Ksig.norm());
+      const Vector6d s = Hooke3d(2.5 * e1 - 1.5 * e2, m).Ksig;
+      CHECK((s - (2.5 * o.Ksig - 1.5 * Hooke3d(e2, m).Ksig)).norm() <= 1e-12 * s.norm());
+    }
+    // the nearly incompressible B: its uniaxial modulus is far above E (lambda + 2G =
+    // E (1 - nu) / ((1 + nu)(1 - 2 nu)) = 7e7 * 0.55 / 0.145 = 265517241.37931034 Pa)
+    Vector6d ex = Vector6d::Zero();
+    ex(0) = 1e-3;
+    CHECK(Hooke3d(ex, matB).Ksig(0) == doctest::Approx(265517.24137931034).epsilon(1e-12));
+  }
+}
+
+TEST_SUITE("VMconst") {
+  // [E, nu, rho_y] of two more materials: a weak and a strong one
+  const Vector3d weak(2e5, 0.2, 1e3), strong(7e7, 0.45, 3e6);
+  struct Moduli {
+    double K, G;
+  };
+  Moduli moduliOf(const Vector3d& m) {
+    return {m(0) / (3 * (1 - 2 * m(1))), m(0) / (2 * (1 + m(1)))};
+  }
+  // the trial rho of plasticStrain() for a material, by hand: 2G |e|, |e|^2 = 0.0146625
+  double rhoTrialOf(const Vector3d& m) { return 2 * moduliOf(m).G * std::sqrt(0.0146625); }
+  Matrix6d fdTangent(const Vector6d& eps, const Vector3d& m) {
+    Matrix6d Dfd;
+    const double d = 1e-7 * std::max(1.0, eps.norm() * 10);
+    for (int c = 0; c < 6; ++c) {
+      Vector6d ep = eps, em = eps;
+      ep(c) += d;
+      em(c) -= d;
+      Dfd.col(c) = (VMconst(ep, m).Ksig - VMconst(em, m).Ksig) / (2 * d);
+    }
+    return Dfd;
+  }
+  Matrix3d rot3(double a, double b) {  // about z by a, then about x by b
+    Matrix3d Rz, Rx;
+    Rz << std::cos(a), -std::sin(a), 0, std::sin(a), std::cos(a), 0, 0, 0, 1;
+    Rx << 1, 0, 0, 0, std::cos(b), -std::sin(b), 0, std::sin(b), std::cos(b);
+    return Rx * Rz;
+  }
+
+  TEST_CASE("VMconst: three materials in turn: each returns to its own surface with its own K, G and theta (by hand)") {
+    const Vector6d eps = plasticStrain();
+    for (const Vector3d& m : {weak, mCst, strong, weak}) {
+      CAPTURE(m(0));
+      const Moduli M = moduliOf(m);
+      const double rhoTr = rhoTrialOf(m), theta = m(2) / rhoTr;
+      REQUIRE(theta < 1.0);  // every one plastic at this strain
+      const ConstOut o = VMconst(eps, m);
+      CHECK(std::abs(rhoOf(o.Ksig) - m(2)) <= 1e-10 * m(2));
+      CHECK(meanOf(o.Ksig) == doctest::Approx(3 * M.K * 0.02).epsilon(1e-12));  // p = K tr(eps)
+      const Vector6d eVol = 0.02 * m1();
+      CHECK((o.epsE - (eVol + theta * (eps - eVol))).norm() <= 1e-12 * eps.norm());
+      // the tangent: central differences, symmetric, D m = 3K m, zero along the deviator
+      const Matrix6d Dfd = fdTangent(eps, m);
+      CHECK((o.D - Dfd).norm() <= 1e-6 * o.D.norm());
+      CHECK((o.D - o.D.transpose()).norm() <= 1e-12 * o.D.norm());
+      CHECK((o.D * m1() - 3 * M.K * m1()).norm() <= 1e-9 * 3 * M.K);
+      Vector6d u = devOf(eps);
+      CHECK(rhoOf(o.D * u) <= 1e-9 * 2 * M.G * u.norm());
+      // a deviatoric strain w normal to n (n : w = 0, n = s / rho) gets 2G theta w: the
+      // trial deviator's part taken out of w = [1 -1 0 0 0 0] (n as an engineering strain)
+      Vector6d w = Vector6d::Zero();
+      w(0) = 1.0, w(1) = -1.0;
+      const Vector6d s = devOf(Hooke3d(eps, m).Ksig), n = s / rhoOf(s);
+      Vector6d nEng = n;
+      nEng.tail<3>() *= 2;
+      w -= n.dot(w) * nEng;                               // n . w is n : w; n . nEng = 1
+      const Vector6d Dw = o.D * w;
+      Vector6d wStress = w;                               // 2G theta w as a stress: shears halved
+      wStress.tail<3>() *= 0.5;
+      CHECK((Dw - 2 * M.G * theta * wStress).norm() <= 1e-9 * 2 * M.G * wStress.norm());
+    }
+  }
+  TEST_CASE("VMconst: the same strain is elastic for a strong material and plastic for a weak one") {
+    Vector6d eps;
+    eps << 1e-2, -2e-2, 5e-3, 1e-2, -4e-3, 7e-3;  // |e_dev| = 0.0245: rho_tr 1.2e6 and 4.1e3 Pa
+    const ConstOut s = VMconst(eps, strong), w = VMconst(eps, weak), s2 = VMconst(eps, strong);
+    const Moduli S = moduliOf(strong);
+    REQUIRE(rhoOf(Hooke3d(eps, strong).Ksig) < strong(2));
+    REQUIRE(rhoOf(Hooke3d(eps, weak).Ksig) > weak(2));
+    CHECK(s.epsE == eps);
+    const double l = S.K - 2 * S.G / 3, tr = eps.head<3>().sum();
+    Vector6d tau;  // elastic by hand
+    tau << l * tr + 2 * S.G * eps(0), l * tr + 2 * S.G * eps(1), l * tr + 2 * S.G * eps(2), S.G * eps(3),
+        S.G * eps(4), S.G * eps(5);
+    CHECK((s.Ksig - tau).norm() <= 1e-12 * tau.norm());
+    CHECK(std::abs(s.D(3, 3) - S.G) <= 1e-12 * S.G);      // the elastic tangent
+    CHECK(std::abs(s.D(0, 1) - l) <= 1e-12 * l);
+    CHECK(std::abs(rhoOf(w.Ksig) - weak(2)) <= 1e-10 * weak(2));
+    CHECK((s2.Ksig - s.Ksig).norm() == 0.0);              // the weak one in between changed nothing
+  }
+  TEST_CASE("VMconst: a state left on the surface (f of round-off) stands with the elastic tangent; f = 1e-6 returns") {
+    for (const Vector3d& m : {weak, strong}) {
+      const Vector6d dir = devOf(plasticStrain()) + 0.01 * m1();
+      const double r0 = rhoOf(Hooke3d(dir, m).Ksig);
+      // rho_tr = rho_y (1 + 1e-12): f = 1e-12 <= 1e-9, the trial state stands
+      const Vector6d on = dir * (m(2) * (1 + 1e-12) / r0);
+      const ConstOut o = VMconst(on, m);
+      CHECK((o.D - isoD(m(0), m(1))).norm() <= 1e-12 * o.D.norm());
+      CHECK(o.epsE == on);
+      // rho_tr = rho_y (1 + 1e-6): returned, no deviatoric stiffness along the deviator
+      const Vector6d out = dir * (m(2) * (1 + 1e-6) / r0);
+      const ConstOut p = VMconst(out, m);
+      CHECK(std::abs(rhoOf(p.Ksig) - m(2)) <= 1e-12 * m(2));
+      Vector6d u = devOf(out);
+      CHECK(rhoOf(p.D * u) <= 1e-6 * 2 * moduliOf(m).G * u.norm());
+    }
+  }
+  TEST_CASE("VMconst: isotropic: the return of a rotated strain is the rotated return (two materials)") {
+    for (const Vector3d& m : {strong, weak})
+      for (const Matrix3d& Q : {rot3(0.5, -0.8), rot3(-1.3, 0.2)}) {
+        const Vector6d eps = plasticStrain();
+        Matrix3d et;
+        et << eps(0), eps(3) / 2, eps(5) / 2, eps(3) / 2, eps(1), eps(4) / 2, eps(5) / 2, eps(4) / 2, eps(2);
+        const Matrix3d er = Q * et * Q.transpose();
+        Vector6d epsR;
+        epsR << er(0, 0), er(1, 1), er(2, 2), 2 * er(0, 1), 2 * er(1, 2), 2 * er(2, 0);
+        const Vector6d a = VMconst(eps, m).Ksig, b = VMconst(epsR, m).Ksig;
+        Matrix3d ta, tb;
+        ta << a(0), a(3), a(5), a(3), a(1), a(4), a(5), a(4), a(2);
+        tb << b(0), b(3), b(5), b(3), b(1), b(4), b(5), b(4), b(2);
+        CHECK((tb - Q * ta * Q.transpose()).norm() <= 1e-10 * ta.norm());
+      }
   }
 }

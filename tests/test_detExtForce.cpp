@@ -63,3 +63,56 @@ TEST_SUITE("detExtForce") {
     CHECK(f1(dof(1, 0)) == 0.0);
   }
 }
+
+TEST_SUITE("detExtForce") {
+  // two point sets on different grids, called in turn: each result from its own input only
+  // (an answer that keeps an earlier call's vector, or its size, fails)
+  TEST_CASE("detExtForce: two point sets, two g, two sizes in turn: the nodal forces by hand each time") {
+    // set 1: a GIMP point of 9 nodes (0.1225 0.855 0.0225 in x and y) on a 3 x 3 node grid
+    const double s[3] = {0.1225, 0.855, 0.0225};
+    std::vector<int> nodes;
+    std::vector<double> S;
+    for (int b = 0; b < 3; ++b)
+      for (int a = 0; a < 3; ++a) {
+        nodes.push_back(3 * b + a);
+        S.push_back(s[a] * s[b]);
+      }
+    const std::vector<MaterialPoint> set1 = {point(nodes, S, 2.5, Vector2d(10.0, 4.0))};
+    // set 2: two MPM points on a 4-node-wide grid sharing nodes 5 and 6, nodes 9.. unused
+    const std::vector<MaterialPoint> set2 = {point({1, 2, 5, 6}, {0.2, 0.3, 0.1, 0.4}, 1.0, Vector2d(0, 0)),
+                                             point({5, 6, 9, 10}, {0.5, 0.25, 0.125, 0.125}, 4.0, Vector2d(-8.0, 0))};
+    for (int round = 0; round < 2; ++round) {
+      CAPTURE(round);
+      const Eigen::VectorXd f1 = detExtForce(18, 9.81, set1);
+      REQUIRE(f1.size() == 18);
+      for (int v = 0; v < 9; ++v) {
+        CHECK(f1(2 * v) == doctest::Approx(S[v] * 10.0).epsilon(1e-14));
+        CHECK(f1(2 * v + 1) == doctest::Approx(S[v] * (4.0 - 2.5 * 9.81)).epsilon(1e-14));
+      }
+      const Eigen::VectorXd f2 = detExtForce(32, 2.0, set2);
+      REQUIRE(f2.size() == 32);
+      Eigen::VectorXd e2 = Eigen::VectorXd::Zero(32);   // by hand: y = -m g S, x = fp_x S
+      e2(2 * 1 + 1) = -0.2 * 2.0, e2(2 * 2 + 1) = -0.3 * 2.0;
+      e2(2 * 5 + 1) = -0.1 * 2.0 - 0.5 * 8.0, e2(2 * 6 + 1) = -0.4 * 2.0 - 0.25 * 8.0;
+      e2(2 * 9 + 1) = -0.125 * 8.0, e2(2 * 10 + 1) = -0.125 * 8.0;
+      e2(2 * 5) = -0.5 * 8.0, e2(2 * 6) = -0.25 * 8.0, e2(2 * 9) = -0.125 * 8.0, e2(2 * 10) = -0.125 * 8.0;
+      CHECK((f2 - e2).norm() <= 1e-14 * e2.norm());
+    }
+  }
+  TEST_CASE("detExtForce: additive over the points, each node's force sums to its points' shares, the total moment sum_v x_v f_v = sum_p x_p F_p") {
+    // nodes of a 3 x 3 grid of 1 m cells (node n = 4 row + column); each point's basis
+    // values reproduce its position (sum_v S_v x_v = x_p), so the moment of the nodal forces
+    // is that of the point forces
+    auto X = [](int n) { return Vector2d(n % 4, n / 4); };
+    const MaterialPoint a = point({0, 1, 4, 5}, {0.28, 0.42, 0.12, 0.18}, 3.0, Vector2d(1.0, 2.0));    // at (0.6, 0.3)
+    const MaterialPoint b = point({5, 6, 9, 10}, {0.06, 0.14, 0.24, 0.56}, 1.5, Vector2d(-4.0, 0.5));  // at (1.7, 1.8)
+    const Eigen::VectorXd fa = detExtForce(32, 3.0, {a}), fb = detExtForce(32, 3.0, {b});
+    const Eigen::VectorXd fab = detExtForce(32, 3.0, {a, b});
+    CHECK((fab - fa - fb).norm() <= 1e-14 * fab.norm());
+    CHECK(fab(2 * 5 + 1) == doctest::Approx(0.18 * (2.0 - 9.0) + 0.06 * (0.5 - 4.5)).epsilon(1e-14));
+    double moment = 0.0;  // about the origin, z component: x f_y - y f_x
+    for (int n = 0; n < 16; ++n) moment += X(n)(0) * fab(2 * n + 1) - X(n)(1) * fab(2 * n);
+    const double expected = 0.6 * (2.0 - 9.0) - 0.3 * 1.0 + 1.7 * (0.5 - 4.5) - 1.8 * (-4.0);
+    CHECK(moment == doctest::Approx(expected).epsilon(1e-13));
+  }
+}

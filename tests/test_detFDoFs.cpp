@@ -278,3 +278,56 @@ TEST_SUITE("detFDoFs") {
 #endif
   }
 }
+
+TEST_SUITE("detFDoFs") {
+  // points linked by hand, nodes listed in any order; lone = false: the free set of the
+  // exercise alone ([AMPLE] sec 4), without the lone-node rules that follow it
+  MaterialPoint linkedTo(MpType t, std::vector<int> nodes) {
+    MaterialPoint mp;
+    mp.mpType = t;
+    mp.nn = int(nodes.size());
+    for (int v = 0; v < mp.nn; ++v) mp.nIN[v] = nodes[v];
+    return mp;
+  }
+  TEST_CASE("detFDoFs: a 9-node GIMP point and an MPM point with its nodes out of order on one grid, one MPM point on another, in turn; bcs in x or y only") {
+    // grid A: 3 x 3 cells, 4 nodes per row (node = 4 row + column), 32 dofs
+    Mesh a = formCoord2D(3, 3, 3.0, 3.0);
+    const std::vector<MaterialPoint> ptsA = {linkedTo(MpType::GIMP, {0, 1, 2, 4, 5, 6, 8, 9, 10}),
+                                             linkedTo(MpType::MPM, {15, 11, 14, 10})};
+    // node 0 held in x and y, node 5 in y only, node 15 in x only, node 3 (not linked) in y
+    a.bc = {{dof(0, 0), 0.0}, {dof(0, 1), 0.0}, {dof(5, 1), 0.0}, {dof(15, 0), 0.02}, {dof(3, 1), 0.0}};
+    std::vector<int> expectedA;
+    for (int n : {1, 2, 4, 5, 6, 8, 9, 10, 11, 14, 15})
+      for (int i = 0; i < nD; ++i)
+        if (!(n == 5 && i == 1) && !(n == 15 && i == 0)) expectedA.push_back(dof(n, i));
+    std::sort(expectedA.begin(), expectedA.end());
+    // grid B: 2 x 1 cells, 6 nodes; one MPM point on cell 1 (nodes 1 2 4 5), node 2 held in x
+    Mesh b = formCoord2D(2, 1, 2.0, 1.0);
+    b.bc = {{dof(2, 0), 0.0}};
+    const std::vector<MaterialPoint> ptsB = {linkedTo(MpType::MPM, {5, 4, 1, 2})};
+    const std::vector<int> expectedB = {2, 3, 5, 8, 9, 10, 11};
+    for (int round = 0; round < 2; ++round) {
+      CAPTURE(round);
+      CHECK(detFDoFs(a, ptsA, {}, false) == expectedA);
+      CHECK(detFDoFs(b, ptsB, {}, false) == expectedB);
+    }
+    // without the bcs: every dof of the linked nodes, and only those
+    a.bc.clear();
+    std::vector<int> all;
+    for (int n : {0, 1, 2, 4, 5, 6, 8, 9, 10, 11, 14, 15})
+      for (int i = 0; i < nD; ++i) all.push_back(dof(n, i));
+    CHECK(detFDoFs(a, ptsA, {}, false) == all);
+  }
+  TEST_CASE("detFDoFs: a node reached by one point is as free as one reached by many; the order of the points does not matter") {
+    Mesh m = formCoord2D(3, 1, 3.0, 1.0);                 // 8 nodes: 0-3 bottom, 4-7 top
+    std::vector<MaterialPoint> pts = {linkedTo(MpType::MPM, {0, 1, 4, 5}), linkedTo(MpType::MPM, {1, 2, 5, 6}),
+                                      linkedTo(MpType::MPM, {1, 2, 5, 6}), linkedTo(MpType::MPM, {2, 3, 6, 7})};
+    std::vector<int> all(16);
+    for (int d = 0; d < 16; ++d) all[d] = d;
+    CHECK(detFDoFs(m, pts, {}, false) == all);
+    std::reverse(pts.begin(), pts.end());
+    CHECK(detFDoFs(m, pts, {}, false) == all);
+    pts.resize(1);                                        // only the point of cell 2: nodes 2 3 6 7
+    CHECK(detFDoFs(m, pts, {}, false) == std::vector<int>{4, 5, 6, 7, 12, 13, 14, 15});
+  }
+}

@@ -218,3 +218,161 @@ TEST_SUITE("stiffnessPattern") {
     CHECK((structure - structure.transpose()).norm() == 0.0);  // symmetric pattern
   }
 }
+
+// Points made by hand on a 2 x 2 grid of 1 m cells (node n = 3 row + column at (column,
+// row)): their nodes, basis values and gradients written out (eqs 22-26), so that only
+// detMPs and the constitutive law run (no elemMPinfo). Small strain (SS) needs Hooke3d
+// alone; the eqs 14 and 16 sums are written out here against the law sigma = lambda tr(eps)
+// 1 + 2 mu eps, A_ijkl = lambda d_ij d_kl + mu (d_ik d_jl + d_il d_jk).
+TEST_SUITE("detMPs") {
+  struct Basis1 {
+    std::vector<int> at;             // node coordinate (0, 1, 2)
+    std::vector<double> S, dS;
+  };
+  // 1D values of a GIMP point (l = 0.25, h = 1) at 1.1 and 0.9, of MPM points at 0.3, 0.6, 1.7, 1.4
+  Basis1 gimp11() { return {{0, 1, 2}, {0.0225, 0.855, 0.1225}, {-0.3, -0.4, 0.7}}; }
+  Basis1 gimp09() { return {{0, 1, 2}, {0.1225, 0.855, 0.0225}, {-0.7, 0.4, 0.3}}; }
+  Basis1 mpm(double x) {             // the hat functions of the cell holding x
+    const int c = int(x);
+    const double r = x - c;
+    return {{c, c + 1}, {1 - r, r}, {-1.0, 1.0}};
+  }
+  // a point of the tensor-product basis bx (x) by, material m, volume V
+  MaterialPoint handPoint(const Basis1& bx, const Basis1& by, MpType type, const Vector3d& m, double V) {
+    MaterialPoint mp;
+    mp.mpType = type;
+    mp.cmType = CmType::Elastic;
+    mp.mCst = m;
+    mp.vp = mp.vp0 = V;
+    mp.nn = 0;
+    for (size_t b = 0; b < by.at.size(); ++b)
+      for (size_t a = 0; a < bx.at.size(); ++a) {
+        const int v = mp.nn++;
+        mp.nIN[v] = 3 * by.at[b] + bx.at[a];
+        mp.Svp[v] = bx.S[a] * by.S[b];
+        mp.dSvp(0, v) = bx.dS[a] * by.S[b];
+        mp.dSvp(1, v) = bx.S[a] * by.dS[b];
+      }
+    return mp;
+  }
+  const Vector3d matA(1e6, 0.3, 2e3), matB(3e5, 0.15, 1e3);
+  std::vector<MaterialPoint> handPoints() {
+    std::vector<MaterialPoint> pts = {handPoint(gimp11(), gimp09(), MpType::GIMP, matA, 0.25),
+                                      handPoint(mpm(0.3), mpm(0.6), MpType::MPM, matB, 0.2),
+                                      handPoint(mpm(1.7), mpm(1.4), MpType::MPM, matA, 0.3),
+                                      handPoint(mpm(1.2), mpm(0.3), MpType::MPM, matB, 0.15)};
+    pts[0].epsEn << 1e-3, -5e-4, 2e-4, 6e-4, 0, 0;   // earlier (small) strains
+    pts[1].epsEn << -4e-4, 8e-4, 0, -3e-4, 0, 0;
+    pts[3].epsEn << 2e-4, 3e-4, -1e-4, 9e-4, 0, 0;
+    return pts;
+  }
+  Eigen::VectorXd handUvw(double size) {  // 9 nodes, 18 dofs
+    Eigen::VectorXd u(18);
+    for (int d = 0; d < 18; ++d) u(d) = size * std::sin(1.7 * d + 0.3);
+    return u;
+  }
+  double lamOf(const Vector3d& m) { return m(0) * m(1) / ((1 + m(1)) * (1 - 2 * m(1))); }
+  double muOf(const Vector3d& m) { return m(0) / (2 * (1 + m(1))); }
+  // eqs 16 and 14 by hand for SS: f = sum_p sum_j dS_ja sigma_ij V, K = sum_p dS_ja A_ijkl dS_lb V
+  void handSS(const std::vector<MaterialPoint>& pts, const Eigen::VectorXd& u, Eigen::VectorXd& f,
+              Eigen::MatrixXd& K) {
+    f = Eigen::VectorXd::Zero(18);
+    K = Eigen::MatrixXd::Zero(18, 18);
+    for (const MaterialPoint& mp : pts) {
+      Eigen::Matrix2d H = Eigen::Matrix2d::Zero();   // grad du
+      for (int v = 0; v < mp.nn; ++v)
+        for (int i = 0; i < 2; ++i)
+          for (int j = 0; j < 2; ++j) H(i, j) += u(2 * mp.nIN[v] + i) * mp.dSvp(j, v);
+      Matrix3d e;                                     // eps_n + sym(H), tensor shears
+      const Vector6d& n = mp.epsEn;
+      e << n(0), n(3) / 2, n(5) / 2, n(3) / 2, n(1), n(4) / 2, n(5) / 2, n(4) / 2, n(2);
+      e.topLeftCorner<2, 2>() += 0.5 * (H + H.transpose());
+      const double l = lamOf(mp.mCst), mu = muOf(mp.mCst);
+      const Matrix3d s = l * e.trace() * Matrix3d::Identity() + 2 * mu * e;
+      auto A = [&](int i, int j, int k, int q) {
+        return l * (i == j) * (k == q) + mu * ((i == k) * (j == q) + (i == q) * (j == k));
+      };
+      for (int a = 0; a < mp.nn; ++a)
+        for (int i = 0; i < 2; ++i) {
+          for (int j = 0; j < 2; ++j) f(2 * mp.nIN[a] + i) += mp.dSvp(j, a) * s(i, j) * mp.vp;
+          for (int b = 0; b < mp.nn; ++b)
+            for (int k = 0; k < 2; ++k)
+              for (int j = 0; j < 2; ++j)
+                for (int q = 0; q < 2; ++q)
+                  K(2 * mp.nIN[a] + i, 2 * mp.nIN[b] + k) += mp.dSvp(j, a) * A(i, j, k, q) * mp.dSvp(q, b) * mp.vp;
+        }
+    }
+  }
+
+  TEST_CASE("detMPs: small strain, points made by hand (a 9-node GIMP point, MPM points sharing its nodes, two materials): fint and Kt of eqs 16 and 14") {
+    const std::vector<MaterialPoint> start = handPoints();
+    for (double size : {0.0, 1e-3, 4e-3}) {           // two increments and none, in turn
+      CAPTURE(size);
+      std::vector<MaterialPoint> pts = start;
+      const Eigen::VectorXd u = handUvw(size);
+      const DetMPsOut out = detMPs(u, pts, Formulation::SS);
+      Eigen::VectorXd f;
+      Eigen::MatrixXd K;
+      handSS(start, u, f, K);
+      CHECK((out.fint - f).norm() <= 1e-12 * f.norm());
+      CHECK((Eigen::MatrixXd(out.Kt) - K).norm() <= 1e-12 * K.norm());
+      // each point alone: the sum over the points is the assembly, nothing more
+      Eigen::VectorXd sum = Eigen::VectorXd::Zero(18);
+      for (const MaterialPoint& mp : start) {
+        std::vector<MaterialPoint> one = {mp};
+        sum += detMPs(u, one, Formulation::SS).fint;
+      }
+      CHECK((sum - f).norm() <= 1e-12 * f.norm());
+    }
+  }
+  TEST_CASE("detMPs: small strain, a homogeneous gradient on hand points: no net force, the first moment sum_a X_a (x) f_a = sum_p V_p sigma_p") {
+    std::vector<MaterialPoint> pts = handPoints();
+    for (MaterialPoint& mp : pts) mp.epsEn.setZero();
+    Eigen::Matrix2d G;
+    G << 2e-3, -1e-3, 5e-4, -1.5e-3;
+    Eigen::VectorXd u(18);
+    for (int n = 0; n < 9; ++n) u.segment<2>(2 * n) = G * Vector2d(n % 3, n / 3);
+    const DetMPsOut out = detMPs(u, pts, Formulation::SS);
+    Eigen::Matrix2d M = Eigen::Matrix2d::Zero(), expected = Eigen::Matrix2d::Zero();
+    Vector2d net = Vector2d::Zero();
+    for (int n = 0; n < 9; ++n) {
+      net += out.fint.segment<2>(2 * n);
+      M += Vector2d(n % 3, n / 3) * out.fint.segment<2>(2 * n).transpose();
+    }
+    const Eigen::Matrix2d e = 0.5 * (G + G.transpose());
+    for (const MaterialPoint& mp : pts) {               // sigma = lambda tr(e) 1 + 2 mu e, in plane
+      const Eigen::Matrix2d s = lamOf(mp.mCst) * e.trace() * Eigen::Matrix2d::Identity() + 2 * muOf(mp.mCst) * e;
+      expected += mp.vp * s;
+      CHECK((stressToTensor(mp.sig).topLeftCorner<2, 2>() - s).norm() <= 1e-12 * s.norm());
+    }
+    CHECK(net.norm() <= 1e-12 * expected.norm());
+    CHECK((M - expected).norm() <= 1e-12 * expected.norm());
+  }
+  // finite strain on the same hand points: the tangent against central differences of fint
+  double handTangentError(Formulation form) {
+    std::vector<MaterialPoint> pts = handPoints();
+    for (size_t p = 0; p < pts.size(); ++p) {        // a converged state with stress
+      pts[p].Fn << 1.02 + 0.01 * p, 0.03, 0, -0.02, 0.97, 0, 0, 0, 1;
+      pts[p].vp = pts[p].Fn.determinant() * pts[p].vp0;
+    }
+    const Eigen::VectorXd u = handUvw(5e-3);
+    std::vector<MaterialPoint> work = pts;
+    const Eigen::MatrixXd Kt = Eigen::MatrixXd(detMPs(u, work, form).Kt);
+    Eigen::MatrixXd Kfd(18, 18);
+    const double d = 1e-7;
+    for (int c = 0; c < 18; ++c) {
+      Eigen::VectorXd up = u, um = u;
+      up(c) += d;
+      um(c) -= d;
+      std::vector<MaterialPoint> a = pts, b = pts;
+      Kfd.col(c) = (detMPs(up, a, form).fint - detMPs(um, b, form).fint) / (2 * d);
+    }
+    return (Kt - Kfd).norm() / Kt.norm();
+  }
+  TEST_CASE("detMPs: PC on hand points with a converged state: the tangent equals central differences of fint") {
+    CHECK(handTangentError(Formulation::PC) < 1e-6);
+  }
+  TEST_CASE("detMPs: UL on hand points with a converged state: the tangent equals central differences of fint") {
+    CHECK(handTangentError(Formulation::UL) < 1e-6);
+  }
+}

@@ -142,3 +142,127 @@ TEST_SUITE("formULstiff") {
     CHECK(std::abs(AI(1, 2) - (384615.3846153846 - 3e3)) <= 1e-6);
   }
 }
+
+// The tangent against closed forms that need no other exercise: D written out by hand (an
+// anisotropic one with normal-shear couplings and an isotropic one), b_e diagonal so that
+// L = d ln(b)/db is the divided difference theta_mn = (ln b_m - ln b_n) / (b_m - b_n) on
+// each pair (1 / b_m when equal) and B g = g b + b g', and rotations for the general b_e.
+TEST_SUITE("formULstiff") {
+  Matrix6d anisoD() {  // symmetric, positive definite, every entry set
+    Matrix6d D;
+    D << 9.0, 2.0, 1.5, 0.4, -0.3, 0.2,
+         2.0, 7.0, 1.2, -0.5, 0.6, 0.1,
+         1.5, 1.2, 8.0, 0.3, 0.2, -0.4,
+         0.4, -0.5, 0.3, 3.0, 0.25, -0.2,
+         -0.3, 0.6, 0.2, 0.25, 2.5, 0.15,
+         0.2, 0.1, -0.4, -0.2, 0.15, 2.8;
+    return D * 1e5;
+  }
+  Matrix6d isotropicD(double lam, double mu) {
+    Matrix6d D = Matrix6d::Zero();
+    for (int i = 0; i < 3; ++i) {
+      for (int j = 0; j < 3; ++j) D(i, j) = lam;
+      D(i, i) = lam + 2 * mu;
+      D(i + 3, i + 3) = mu;
+    }
+    return D;
+  }
+  Matrix3d sym3(const Vector6d& s) {  // a stress 6-vector [xx yy zz xy yz zx] as a tensor
+    Matrix3d t;
+    t << s(0), s(3), s(5), s(3), s(1), s(4), s(5), s(4), s(2);
+    return t;
+  }
+  Vector6d engineering(const Matrix3d& w) {  // a symmetric tensor as a strain 6-vector
+    Vector6d e;
+    e << w(0, 0), w(1, 1), w(2, 2), 2 * w(0, 1), 2 * w(1, 2), 2 * w(2, 0);
+    return e;
+  }
+  // a_ijkl g_kl = 1/(2J) D_ijmn theta_mn (b_n g_mn + b_m g_nm) - sigma_il g_jl, b_e = diag(b)
+  Matrix3d closedForm(double J, const Matrix6d& D, const Vector6d& sig, const Vector3d& b, const Matrix3d& g) {
+    Matrix3d w;
+    for (int m = 0; m < 3; ++m)
+      for (int n = 0; n < 3; ++n) {
+        const double th = b(m) == b(n) ? 1.0 / b(m) : std::log1p((b(m) - b(n)) / b(n)) / (b(m) - b(n));
+        w(m, n) = th * (b(n) * g(m, n) + b(m) * g(n, m));
+      }
+    return sym3(D * engineering(w)) / (2 * J) - sym3(sig) * g.transpose();
+  }
+  Eigen::Vector4d vec2(const Matrix3d& g) { return Eigen::Vector4d(g(0, 0), g(0, 1), g(1, 0), g(1, 1)); }
+  Matrix3d inPlane(const Eigen::Vector4d& c) {
+    Matrix3d t = Matrix3d::Zero();
+    t << c(0), c(1), 0, c(2), c(3), 0, 0, 0, 0;
+    return t;
+  }
+  Matrix3d grad2() {  // an in-plane displacement gradient, not symmetric
+    Matrix3d g = Matrix3d::Zero();
+    g << 2e-3, -7e-4, 0, 1.1e-3, -1.3e-3, 0, 0, 0, 0;
+    return g;
+  }
+  Matrix3d grad3() {  // a full one
+    Matrix3d g;
+    g << 2e-3, -7e-4, 4e-4, 1.1e-3, -1.3e-3, 6e-4, -9e-4, 3e-4, 8e-4;
+    return g;
+  }
+
+  TEST_CASE("formULstiff: at F = b_e = I, a : g = D : sym(g) - sigma g' for two hand-written D and two stresses (no Hooke3d)") {
+    Vector6d s1, s2;
+    s1 << 3e3, -1e3, 2e3, 5e2, -4e2, 1e2;
+    s2 << -8e2, 4e3, -1.5e3, -2e3, 7e2, 1.2e3;
+    for (const Matrix6d& D : {anisoD(), isotropicD(4e5, 2.5e5), anisoD()})
+      for (const Vector6d& sig : {Vector6d(Vector6d::Zero()), s1, s2}) {
+        const Matrix3d g = grad3();
+        const Matrix3d expected = sym3(D * engineering(0.5 * (g + g.transpose()))) - sym3(sig) * g.transpose();
+        const Matrix9d A = formULstiff(Matrix3d::Identity(), D, sig, Matrix3d::Identity());
+        CHECK((contract(A, g) - expected).norm() <= 1e-12 * expected.norm());
+        const Eigen::Matrix4d A4 = formULstiff2D(Matrix3d::Identity(), D, sig, Matrix3d::Identity());
+        const Matrix3d e2 = closedForm(1.0, D, sig, Vector3d::Ones(), grad2());
+        CHECK((A4 * vec2(grad2()) - vec2(e2)).norm() <= 1e-12 * e2.norm());
+      }
+  }
+  TEST_CASE("formULstiff: diagonal b_e (distinct, repeated, nearly repeated eigenvalues), two F: the closed form of L and B") {
+    Matrix3d F1, F2;  // only J = det F enters
+    F1 << 1.1, 0.2, 0, -0.1, 0.95, 0, 0, 0, 1.05;
+    F2 << 0.8, -0.3, 0, 0.25, 1.3, 0, 0, 0, 0.9;
+    Vector6d sig;
+    sig << 2e3, -3e3, 1e3, 1.5e3, -6e2, 9e2;
+    for (const Vector3d& b : {Vector3d(1.3, 0.8, 1.1), Vector3d(1.2, 1.2, 0.9), Vector3d(0.7, 0.7 * (1 + 1e-10), 1.6)})
+      for (const Matrix3d& F : {F1, F2})
+        for (const Matrix6d& D : {anisoD(), isotropicD(6e5, 1.5e5)}) {
+          CAPTURE(b.transpose());
+          const double J = F.determinant();
+          const Matrix3d B = b.asDiagonal();
+          const Matrix3d e3 = closedForm(J, D, sig, b, grad3());
+          CHECK((contract(formULstiff(F, D, sig, B), grad3()) - e3).norm() <= 1e-8 * e3.norm());
+          const Matrix3d e2 = closedForm(J, D, sig, b, grad2());
+          CHECK((formULstiff2D(F, D, sig, B) * vec2(grad2()) - vec2(e2)).norm() <= 1e-8 * e2.norm());
+        }
+  }
+  TEST_CASE("formULstiff: objective: F, b_e and sigma rotated by Q give the tangent rotated by Q (isotropic D, 3D and in plane)") {
+    const Matrix6d D = isotropicD(4e5, 2.5e5);
+    Matrix3d F;
+    F << 1.15, 0.1, 0, -0.2, 0.9, 0, 0, 0, 1.0;
+    const Vector3d b(1.25, 0.85, 1.05);
+    Vector6d sig;
+    sig << 2e3, -3e3, 1e3, 1.5e3, 0, 0;
+    const Matrix3d B = b.asDiagonal(), S = sym3(sig);
+    for (double a : {0.4, -1.1}) {
+      // in plane (about z): the 2D block, b_e with off-diagonal xy terms
+      Matrix3d Q;
+      Q << std::cos(a), -std::sin(a), 0, std::sin(a), std::cos(a), 0, 0, 0, 1;
+      const Matrix3d BR = Q * B * Q.transpose(), SR = Q * S * Q.transpose();
+      const Vector6d sigR = (Vector6d() << SR(0, 0), SR(1, 1), SR(2, 2), SR(0, 1), SR(1, 2), SR(2, 0)).finished();
+      const Matrix3d g = grad2(), gR = Q * g * Q.transpose();
+      const Matrix3d c = closedForm(F.determinant(), D, sig, b, g);        // unrotated, by hand
+      const Eigen::Vector4d c2 = formULstiff2D(Q * F, D, sigR, BR) * vec2(gR);
+      CHECK((inPlane(c2) - (Q * c * Q.transpose())).topLeftCorner<2, 2>().norm() <= 1e-8 * c.norm());
+      // in 3D: about z and x
+      Matrix3d Rx;
+      Rx << 1, 0, 0, 0, std::cos(0.7 * a), -std::sin(0.7 * a), 0, std::sin(0.7 * a), std::cos(0.7 * a);
+      const Matrix3d Q3 = Rx * Q, B3 = Q3 * B * Q3.transpose(), S3 = Q3 * S * Q3.transpose();
+      const Vector6d sig3 = (Vector6d() << S3(0, 0), S3(1, 1), S3(2, 2), S3(0, 1), S3(1, 2), S3(2, 0)).finished();
+      const Matrix3d h = grad3(), c3 = closedForm(F.determinant(), D, sig, b, h);
+      const Matrix3d r3 = contract(formULstiff(Q3 * F, D, sig3, B3), Q3 * h * Q3.transpose());
+      CHECK((r3 - Q3 * c3 * Q3.transpose()).norm() <= 1e-8 * c3.norm());
+    }
+  }
+}

@@ -365,3 +365,71 @@ TEST_SUITE("linSolve") {
   }
 }
 
+
+TEST_SUITE("linSolve") {
+  // K = [4 -1 0; -1 3 -1; 0 -1 2] (symmetric, positive definite)
+  SpMat three() {
+    std::vector<Eigen::Triplet<double>> t{{0, 0, 4.0}, {0, 1, -1.0}, {1, 0, -1.0}, {1, 1, 3.0},
+                                          {1, 2, -1.0}, {2, 1, -1.0}, {2, 2, 2.0}};
+    SpMat K(3, 3);
+    K.setFromTriplets(t.begin(), t.end());
+    return K;
+  }
+  TEST_CASE("linSolve: a 3-dof system with the held dof first, then last, in turn: the solutions and reactions by hand") {
+    for (int round = 0; round < 2; ++round) {
+      CAPTURE(round);
+      // dof 0 prescribed 0.2 at NRit = 1, oobf = (1, 2, -1): Kff = [3 -1; -1 2],
+      // rhs = (2 + 0.2, -1), x = [2 1; 1 3] rhs / 5 = (0.68, -0.16), reaction 4 (0.2) - 0.68 - 1
+      const LinSolveOut a = linSolve({{0, 0.2}}, three(), Eigen::Vector3d(1.0, 2.0, -1.0), 1, {1, 2});
+      CHECK(a.duvw(0) == 0.2);
+      CHECK(a.duvw(1) == doctest::Approx(0.68).epsilon(1e-14));
+      CHECK(a.duvw(2) == doctest::Approx(-0.16).epsilon(1e-14));
+      CHECK(a.drct(0) == doctest::Approx(-0.88).epsilon(1e-14));
+      CHECK(a.drct(1) == 0.0);
+      CHECK(a.drct(2) == 0.0);
+      // dof 2 held at NRit = 2 (its value no longer applied), oobf = (0.5, -1, 3): Kff = [4 -1; -1 3],
+      // x = [3 1; 1 4] (0.5, -1) / 11 = (0.5, -3.5) / 11, reaction -x1 - 3
+      const LinSolveOut b = linSolve({{2, 0.7}}, three(), Eigen::Vector3d(0.5, -1.0, 3.0), 2, {0, 1});
+      CHECK(b.duvw(2) == 0.0);
+      CHECK(b.duvw(0) == doctest::Approx(0.5 / 11).epsilon(1e-14));
+      CHECK(b.duvw(1) == doctest::Approx(-3.5 / 11).epsilon(1e-14));
+      CHECK(b.drct(2) == doctest::Approx(3.5 / 11 - 3.0).epsilon(1e-14));
+      // the same dof held at NRit = 1: its value enters, coupled to dof 1: rhs = (0.5, -1 + 0.7)
+      const LinSolveOut c = linSolve({{2, 0.7}}, three(), Eigen::Vector3d(0.5, -1.0, 3.0), 1, {0, 1});
+      CHECK(c.duvw(2) == 0.7);
+      CHECK(c.duvw(0) == doctest::Approx((1.5 - 0.3) / 11).epsilon(1e-14));
+      CHECK(c.duvw(1) == doctest::Approx((0.5 - 1.2) / 11).epsilon(1e-14));
+      CHECK(c.drct(2) == doctest::Approx(-(0.5 - 1.2) / 11 + 1.4 - 3.0).epsilon(1e-14));
+    }
+  }
+  TEST_CASE("linSolve: every dof prescribed (no free dof): no solve, duvw = the values, drct = Kt duvw - oobf") {
+    const std::vector<BC> bc = {{0, 0.1}, {1, -0.2}, {2, 0.05}};
+    const LinSolveOut o = linSolve(bc, three(), Eigen::Vector3d(1.0, 2.0, -1.0), 1, {});
+    CHECK(o.duvw(0) == 0.1);
+    CHECK(o.duvw(1) == -0.2);
+    CHECK(o.duvw(2) == 0.05);
+    // Kt u = (0.4 + 0.2, -0.1 - 0.6 - 0.05, 0.2 + 0.1) = (0.6, -0.75, 0.3)
+    CHECK(o.drct(0) == doctest::Approx(0.6 - 1.0).epsilon(1e-14));
+    CHECK(o.drct(1) == doctest::Approx(-0.75 - 2.0).epsilon(1e-14));
+    CHECK(o.drct(2) == doctest::Approx(0.3 + 1.0).epsilon(1e-14));
+    // at NRit = 2 nothing moves, and the reactions are the out-of-balance forces' opposite
+    const LinSolveOut p = linSolve(bc, three(), Eigen::Vector3d(1.0, 2.0, -1.0), 2, {});
+    CHECK(p.duvw.norm() == 0.0);
+    CHECK((p.drct - Eigen::Vector3d(-1.0, -2.0, 1.0)).norm() == 0.0);
+  }
+  TEST_CASE("linSolve: linear in oobf and in the prescribed values (superposition), the free equations balanced") {
+    const SpMat K = chain();
+    Eigen::VectorXd f1(5), f2(5);
+    f1 << 0.3, -1.0, 0.5, 2.0, -0.7;
+    f2 << -0.2, 0.4, 1.5, -0.6, 0.9;
+    const std::vector<int> fd = {0, 1, 3, 4};
+    const LinSolveOut a = linSolve({{2, 0.3}}, K, f1, 1, fd), b = linSolve({{2, -0.1}}, K, f2, 1, fd);
+    const LinSolveOut ab = linSolve({{2, 0.2}}, K, f1 + f2, 1, fd);
+    CHECK((ab.duvw - a.duvw - b.duvw).norm() <= 1e-13 * ab.duvw.norm());
+    CHECK((ab.drct - a.drct - b.drct).norm() <= 1e-13 * ab.drct.norm());
+    const Eigen::VectorXd r = K * ab.duvw - (f1 + f2);
+    for (int d : fd) CHECK(std::abs(r(d)) <= 1e-13);
+    CHECK(ab.drct(2) == doctest::Approx(r(2)).epsilon(1e-13));
+    CHECK(ab.drct.sum() == doctest::Approx(-(f1 + f2).sum()).epsilon(1e-13));  // the chain's balance
+  }
+}
