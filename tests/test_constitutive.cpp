@@ -196,7 +196,7 @@ TEST_SUITE("Hooke3d") {
     return e;
   }
 
-  TEST_CASE("Hooke3d: two materials in turn, each with its own D and stress (by hand), none kept from an earlier call") {
+  TEST_CASE("Hooke3d: two materials in turn / each its own D and stress by hand / none kept from an earlier call") {
     const Vector6d eps = generalStrain();
     // the default material first, then A, B and A again: each answer only from its own E, nu
     for (const Vector3d& m : {mCst, matA, matB, matA, mCst, matB}) {
@@ -216,7 +216,7 @@ TEST_SUITE("Hooke3d") {
       CHECK(o.epsE == eps);
     }
   }
-  TEST_CASE("Hooke3d: isotropic: the stress of a rotated strain is the rotated stress (two materials, two rotations)") {
+  TEST_CASE("Hooke3d: isotropic: the stress of a rotated strain is the rotated stress (two materials and two rotations)") {
     for (const Vector3d& m : {matB, matA})
       for (const Matrix3d& Q : {rotation3(0.3, -0.7, 1.1), rotation3(-1.2, 0.4, 0.25)}) {
         const Vector6d eps = generalStrain();
@@ -280,7 +280,7 @@ TEST_SUITE("VMconst") {
     return Rx * Rz;
   }
 
-  TEST_CASE("VMconst: three materials in turn: each returns to its own surface with its own K, G and theta (by hand)") {
+  TEST_CASE("VMconst: three materials in turn: each returns to its own surface with its own K and G and theta (by hand)") {
     const Vector6d eps = plasticStrain();
     for (const Vector3d& m : {weak, mCst, strong, weak}) {
       CAPTURE(m(0));
@@ -331,7 +331,7 @@ TEST_SUITE("VMconst") {
     CHECK(std::abs(rhoOf(w.Ksig) - weak(2)) <= 1e-10 * weak(2));
     CHECK((s2.Ksig - s.Ksig).norm() == 0.0);              // the weak one in between changed nothing
   }
-  TEST_CASE("VMconst: a state left on the surface (f of round-off) stands with the elastic tangent; f = 1e-6 returns") {
+  TEST_CASE("VMconst: a state left on the surface (f of round-off) stands with the elastic tangent / f = 1e-6 returns") {
     for (const Vector3d& m : {weak, strong}) {
       const Vector6d dir = devOf(plasticStrain()) + 0.01 * m1();
       const double r0 = rhoOf(Hooke3d(dir, m).Ksig);

@@ -67,7 +67,7 @@ TEST_SUITE("detExtForce") {
 TEST_SUITE("detExtForce") {
   // two point sets on different grids, called in turn: each result from its own input only
   // (an answer that keeps an earlier call's vector, or its size, fails)
-  TEST_CASE("detExtForce: two point sets, two g, two sizes in turn: the nodal forces by hand each time") {
+  TEST_CASE("detExtForce: two point sets with two g and two sizes in turn: the nodal forces by hand each time") {
     // set 1: a GIMP point of 9 nodes (0.1225 0.855 0.0225 in x and y) on a 3 x 3 node grid
     const double s[3] = {0.1225, 0.855, 0.0225};
     std::vector<int> nodes;
@@ -99,7 +99,7 @@ TEST_SUITE("detExtForce") {
       CHECK((f2 - e2).norm() <= 1e-14 * e2.norm());
     }
   }
-  TEST_CASE("detExtForce: additive over the points, each node's force sums to its points' shares, the total moment sum_v x_v f_v = sum_p x_p F_p") {
+  TEST_CASE("detExtForce: additive over the points / a node's force sums its points' shares / the total moment sum_v x_v f_v = sum_p x_p F_p") {
     // nodes of a 3 x 3 grid of 1 m cells (node n = 4 row + column); each point's basis
     // values reproduce its position (sum_v S_v x_v = x_p), so the moment of the nodal forces
     // is that of the point forces

@@ -289,7 +289,7 @@ TEST_SUITE("detFDoFs") {
     for (int v = 0; v < mp.nn; ++v) mp.nIN[v] = nodes[v];
     return mp;
   }
-  TEST_CASE("detFDoFs: a 9-node GIMP point and an MPM point with its nodes out of order on one grid, one MPM point on another, in turn; bcs in x or y only") {
+  TEST_CASE("detFDoFs: a 9-node GIMP point and an MPM point with its nodes out of order on one grid / one MPM point on another / in turn / bcs in x or y only") {
     // grid A: 3 x 3 cells, 4 nodes per row (node = 4 row + column), 32 dofs
     Mesh a = formCoord2D(3, 3, 3.0, 3.0);
     const std::vector<MaterialPoint> ptsA = {linkedTo(MpType::GIMP, {0, 1, 2, 4, 5, 6, 8, 9, 10}),
@@ -318,7 +318,7 @@ TEST_SUITE("detFDoFs") {
       for (int i = 0; i < nD; ++i) all.push_back(dof(n, i));
     CHECK(detFDoFs(a, ptsA, {}, false) == all);
   }
-  TEST_CASE("detFDoFs: a node reached by one point is as free as one reached by many; the order of the points does not matter") {
+  TEST_CASE("detFDoFs: a node reached by one point is as free as one reached by many / the order of the points does not matter") {
     Mesh m = formCoord2D(3, 1, 3.0, 1.0);                 // 8 nodes: 0-3 bottom, 4-7 top
     std::vector<MaterialPoint> pts = {linkedTo(MpType::MPM, {0, 1, 4, 5}), linkedTo(MpType::MPM, {1, 2, 5, 6}),
                                       linkedTo(MpType::MPM, {1, 2, 5, 6}), linkedTo(MpType::MPM, {2, 3, 6, 7})};

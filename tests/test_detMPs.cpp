@@ -304,7 +304,7 @@ TEST_SUITE("detMPs") {
     }
   }
 
-  TEST_CASE("detMPs: small strain, points made by hand (a 9-node GIMP point, MPM points sharing its nodes, two materials): fint and Kt of eqs 16 and 14") {
+  TEST_CASE("detMPs: small strain on points made by hand (a 9-node GIMP point and MPM points sharing its nodes of two materials): fint and Kt of eqs 16 and 14") {
     const std::vector<MaterialPoint> start = handPoints();
     for (double size : {0.0, 1e-3, 4e-3}) {           // two increments and none, in turn
       CAPTURE(size);
@@ -325,7 +325,7 @@ TEST_SUITE("detMPs") {
       CHECK((sum - f).norm() <= 1e-12 * f.norm());
     }
   }
-  TEST_CASE("detMPs: small strain, a homogeneous gradient on hand points: no net force, the first moment sum_a X_a (x) f_a = sum_p V_p sigma_p") {
+  TEST_CASE("detMPs: small strain with a homogeneous gradient on hand points: no net force / the first moment sum_a X_a (x) f_a = sum_p V_p sigma_p") {
     std::vector<MaterialPoint> pts = handPoints();
     for (MaterialPoint& mp : pts) mp.epsEn.setZero();
     Eigen::Matrix2d G;

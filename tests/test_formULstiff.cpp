@@ -204,7 +204,7 @@ TEST_SUITE("formULstiff") {
     return g;
   }
 
-  TEST_CASE("formULstiff: at F = b_e = I, a : g = D : sym(g) - sigma g' for two hand-written D and two stresses (no Hooke3d)") {
+  TEST_CASE("formULstiff: at F = b_e = I the tangent gives a : g = D : sym(g) - sigma g' for two hand-written D and two stresses (no Hooke3d)") {
     Vector6d s1, s2;
     s1 << 3e3, -1e3, 2e3, 5e2, -4e2, 1e2;
     s2 << -8e2, 4e3, -1.5e3, -2e3, 7e2, 1.2e3;
@@ -219,7 +219,7 @@ TEST_SUITE("formULstiff") {
         CHECK((A4 * vec2(grad2()) - vec2(e2)).norm() <= 1e-12 * e2.norm());
       }
   }
-  TEST_CASE("formULstiff: diagonal b_e (distinct, repeated, nearly repeated eigenvalues), two F: the closed form of L and B") {
+  TEST_CASE("formULstiff: diagonal b_e (distinct / repeated / nearly repeated eigenvalues) and two F: the closed form of L and B") {
     Matrix3d F1, F2;  // only J = det F enters
     F1 << 1.1, 0.2, 0, -0.1, 0.95, 0, 0, 0, 1.05;
     F2 << 0.8, -0.3, 0, 0.25, 1.3, 0, 0, 0, 0.9;
@@ -237,7 +237,7 @@ TEST_SUITE("formULstiff") {
           CHECK((formULstiff2D(F, D, sig, B) * vec2(grad2()) - vec2(e2)).norm() <= 1e-8 * e2.norm());
         }
   }
-  TEST_CASE("formULstiff: objective: F, b_e and sigma rotated by Q give the tangent rotated by Q (isotropic D, 3D and in plane)") {
+  TEST_CASE("formULstiff: objective: F and b_e and sigma rotated by Q give the tangent rotated by Q (isotropic D / 3D and in plane)") {
     const Matrix6d D = isotropicD(4e5, 2.5e5);
     Matrix3d F;
     F << 1.15, 0.1, 0, -0.2, 0.9, 0, 0, 0, 1.0;

@@ -375,7 +375,7 @@ TEST_SUITE("linSolve") {
     K.setFromTriplets(t.begin(), t.end());
     return K;
   }
-  TEST_CASE("linSolve: a 3-dof system with the held dof first, then last, in turn: the solutions and reactions by hand") {
+  TEST_CASE("linSolve: a 3-dof system with the held dof first then last in turn: the solutions and reactions by hand") {
     for (int round = 0; round < 2; ++round) {
       CAPTURE(round);
       // dof 0 prescribed 0.2 at NRit = 1, oobf = (1, 2, -1): Kff = [3 -1; -1 2],
@@ -402,7 +402,7 @@ TEST_SUITE("linSolve") {
       CHECK(c.drct(2) == doctest::Approx(-(0.5 - 1.2) / 11 + 1.4 - 3.0).epsilon(1e-14));
     }
   }
-  TEST_CASE("linSolve: every dof prescribed (no free dof): no solve, duvw = the values, drct = Kt duvw - oobf") {
+  TEST_CASE("linSolve: every dof prescribed (no free dof): no solve / duvw = the values / drct = Kt duvw - oobf") {
     const std::vector<BC> bc = {{0, 0.1}, {1, -0.2}, {2, 0.05}};
     const LinSolveOut o = linSolve(bc, three(), Eigen::Vector3d(1.0, 2.0, -1.0), 1, {});
     CHECK(o.duvw(0) == 0.1);
@@ -417,7 +417,7 @@ TEST_SUITE("linSolve") {
     CHECK(p.duvw.norm() == 0.0);
     CHECK((p.drct - Eigen::Vector3d(-1.0, -2.0, 1.0)).norm() == 0.0);
   }
-  TEST_CASE("linSolve: linear in oobf and in the prescribed values (superposition), the free equations balanced") {
+  TEST_CASE("linSolve: linear in oobf and in the prescribed values (superposition) / the free equations balanced") {
     const SpMat K = chain();
     Eigen::VectorXd f1(5), f2(5);
     f1 << 0.3, -1.0, 0.5, 2.0, -0.7;

@@ -146,7 +146,7 @@ TEST_SUITE("updateMPs") {
     return mp;
   }
 
-  TEST_CASE("updateMPs: points on nodes 4..8 in any order and a 9-node GIMP point move by sum_v S_v u_v (by hand), two steps in turn") {
+  TEST_CASE("updateMPs: points on nodes 4..8 in any order and a 9-node GIMP point move by sum_v S_v u_v (by hand) over two steps") {
     // MPM point at (1.7, 1.4) in cell 3: nodes 8 4 7 5 listed out of order, S bilinear
     const MaterialPoint a = gridPoint(MpType::MPM, {8, 4, 7, 5}, {0.28, 0.18, 0.12, 0.42}, Matrix3d::Identity());
     // GIMP point at (1.1, 0.9), l = 0.25: S = Sx Sy with 0.0225 0.855 0.1225 (x) and 0.1225 0.855 0.0225 (y)
@@ -176,7 +176,7 @@ TEST_SUITE("updateMPs") {
     // and the sums are not trivial: the point moved by something else than node 0's u
     CHECK(ua.norm() > 1e-3);
   }
-  TEST_CASE("updateMPs: two points with their own F over two steps: vp = det(F) vp0 and Fn = F of each step, never compounded") {
+  TEST_CASE("updateMPs: two points with their own F over two steps: vp = det(F) vp0 and Fn = F of each step / never compounded") {
     Matrix3d F1, F2, G1, G2;
     F1 << 1.1, 0.2, 0, -0.05, 0.85, 0, 0, 0, 1;
     F2 << 1.2, 0.25, 0, -0.1, 0.8, 0, 0, 0, 1;
