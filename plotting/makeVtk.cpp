@@ -22,7 +22,7 @@ void atomicWrite(const std::string& path, const std::string& text) {
 }
 
 void makeVtk(const Mesh& mesh, const std::string& path, const Eigen::VectorXd& uvw, VtkFormat format) {
-  VtkWriter w(format, "ample-cpp background mesh", "UNSTRUCTURED_GRID");
+  VtkWriter w(format, "ample-cpp background mesh", "UNSTRUCTURED_GRID", path);
   const int nn = mesh.nodes(), ne = mesh.nels(), cn = mesh.cellNodes();
   w.line("POINTS " + std::to_string(nn) + " " + w.realType());
   std::vector<double> xyz(3 * size_t(nn), 0.0);             // z = 0
@@ -45,7 +45,7 @@ void makeVtk(const Mesh& mesh, const std::string& path, const Eigen::VectorXd& u
     for (int n = 0; n < nn; ++n) u[3 * n] = uvw(dof(n, 0)), u[3 * n + 1] = uvw(dof(n, 1));
     w.reals(u, 3);
   }
-  atomicWrite(path, w.text());
+  w.finish();
 }
 
 }  // namespace ample

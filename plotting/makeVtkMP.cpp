@@ -13,7 +13,7 @@ namespace ample {
 void makeVtkMP(const std::vector<MaterialPoint>& mpData, const std::string& path, VtkFormat format) {
   const size_t nmp = mpData.size();
   const std::string n = std::to_string(nmp);
-  VtkWriter w(format, "ample-cpp material points", "UNSTRUCTURED_GRID");
+  VtkWriter w(format, "ample-cpp material points", "UNSTRUCTURED_GRID", path);
   auto perPoint = [&](int width, const std::function<double(const MaterialPoint&, int)>& f) {
     std::vector<double> v(width * nmp);
     for (size_t p = 0; p < nmp; ++p)
@@ -47,7 +47,7 @@ void makeVtkMP(const std::vector<MaterialPoint>& mpData, const std::string& path
   scalar("volume", [](const MaterialPoint& mp) { return mp.vp; });
   scalar("lpx", [](const MaterialPoint& mp) { return mp.lp(0); });
   scalar("lpy", [](const MaterialPoint& mp) { return mp.lp(1); });
-  atomicWrite(path, w.text());
+  w.finish();
 }
 
 }  // namespace ample
