@@ -149,7 +149,7 @@ void solve(Analysis& an, RunLog& log, const RunOptions& opt) {
     moveBoundaries(an.boundaries, lstp, inc.bcScale(an.lstps));      // [Boundaries]: by their du
     if (!inc.last) continue;                                         // (remedy: a first half)
     if (an.afterStep) an.afterStep(an, lstp);                        // setup's hook
-    timed(T.postPro, postPro, mesh, mpData, uvw, lstp, opt.vtkEvery, opt.outDir, opt.vtkFormat);
+    timed(T.postPro, postPro, mesh, mpData, uvw, lstp, opt.vtkEvery, opt.outDir, opt.vtkFormat, opt.vtkGridEvery || an.fem || an.gridMoves);
     log.steps.back().seconds = log.stepClock.lap();
     log.lastConverged = lstp;
   }

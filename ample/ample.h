@@ -28,6 +28,8 @@ struct RunOptions {
   bool quiet = false;      // no progress on stdout
   int lastStep = 0;        // stop after this load step (0: all lstps; the tests use it)
   VtkFormat vtkFormat = VtkFormat::Ascii;  // the VTK files as ASCII or BINARY (--vtk-format)
+  bool vtkGridEvery = false;  // mesh_<lstp>.vtk with every mpData file, also on a grid that
+                              // does not move (--vtk-grid every; postPro.h)
   bool acceptFloor = false;  // accept a step whose residual stalled at its round-off floor
                              // (--accept-floor; checkConverged, ample/solver/roundOffFloor.h)
 };

@@ -41,6 +41,8 @@ struct Analysis {
   Formulation formulation = Formulation::UL;        // frame of equilibrium ([Lagrangian])
   DomainUpdate domainUpdate = DomainUpdate::Uii;    // GIMP domain update ([AMPLE] eq 34)
   bool fem = false;                   // finite element mode: the mesh moves with the nodes (moveMesh)
+  bool gridMoves = false;             // the setup rebuilds the grid between steps (beforeStep;
+                                      // stretch, doughnut): postPro writes mesh_<lstp>.vtk
   std::vector<Boundary> boundaries;                 // implicit boundaries ([Boundaries]); empty: none
   Eigen::VectorXd frct;                             // reactions of the last converged step
   Eigen::VectorXd uvw;                              // its converged displacement increment

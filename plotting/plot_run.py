@@ -4,7 +4,8 @@
 Left:        the points of the last converged step (mp_final.csv), each its domain
              (GIMP: 2 lp x 2 lp; otherwise a square of area V), coloured by FIELD
              (default vonMises), over the background grid (mesh_<last>.vtk, or
-             mesh.vtk; none if the run wrote no VTK, --vtk 0).
+             mesh.vtk: a grid that does not move is written once, see ample's
+             --vtk-grid; none if the run wrote no VTK, --vtk 0).
 Right, top:  the convergence history (residuals.csv): fErr against the Newton-Raphson
              pass, one line per load step (colour = load step), log scale, the tolerance dashed.
 Right, low:  the setup's history.csv if it writes one (e.g. load against displacement);
@@ -16,7 +17,8 @@ usage: plot_run.py OUTDIR [--field NAME] [--original] [--deformed-grid] [--out P
   --field         one of: vonMises sxx syy szz sxy p ux uy u J  (default vonMises)
   --original      points at their original positions X0 (and the first grid written, mesh.vtk)
   --deformed-grid the grid of the last converged step moved by that step's nodal displacement
-                  increment (mesh_<lstp>.vtk: written with --vtk N when N divides that step)
+                  increment (mesh_<lstp>.vtk: written with --vtk N when N divides that step and
+                  the grid moves (fem=1, stretch, doughnut) or the run had --vtk-grid every)
   --out           the PNG to write (default OUTDIR/run.png)
   --history       history.csv columns: X against Y (several: Y1,Y2)
   --animate       instead of the PNG, one self-contained HTML page of every load step written
@@ -55,11 +57,13 @@ HISTORY = {
 }
 
 
-def grid_file(outdir, step, first):
-    """the mesh VTK to draw: the grid of the last converged step, or the first one written"""
+def grid_file(outdir, step, want_first):
+    """the mesh VTK to draw: the grid of the last converged step (mesh_<step>.vtk), else the
+    first one written (mesh.vtk: a grid that does not move is written only once), else the
+    latest mesh_<lstp>.vtk; want_first: mesh.vtk before mesh_<step>.vtk"""
     last = os.path.join(outdir, "mesh_%d.vtk" % step)
     first = os.path.join(outdir, "mesh.vtk")
-    if not first and os.path.exists(last):
+    if not want_first and os.path.exists(last):
         return last
     if os.path.exists(first):
         return first
@@ -74,6 +78,9 @@ def draw_points(ax, fig, outdir, summary, opt):
     path = grid_file(outdir, step, opt.original and not opt.deformed_grid)
     if path:
         nodes, cells, disp = read_mesh(path)
+        if opt.deformed_grid and not disp:
+            print("plot_run.py: %s has no nodal displacement (the grid did not move); rerun "
+                  "ample with --vtk-grid every to draw the deformed grid" % path, file=sys.stderr)
         if opt.deformed_grid and disp:
             nodes = [(x + u, y + v) for (x, y), (u, v) in zip(nodes, disp)]
         edges = [[nodes[c[k]], nodes[c[(k + 1) % len(c)]]] for c in cells for k in range(len(c))]

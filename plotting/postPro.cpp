@@ -10,10 +10,10 @@
 namespace ample {
 
 void postPro(const Mesh& mesh, const std::vector<MaterialPoint>& mpData, const Eigen::VectorXd& uvw,
-             int lstp, int vtkEvery, const std::string& outDir, VtkFormat format) {
+             int lstp, int vtkEvery, const std::string& outDir, VtkFormat format, bool gridEachStep) {
   if (vtkEvery <= 0 || lstp % vtkEvery != 0) return;
   if (lstp == vtkEvery) makeVtk(mesh, outDir + "/mesh.vtk", Eigen::VectorXd(), format);
-  makeVtk(mesh, outDir + "/mesh_" + std::to_string(lstp) + ".vtk", uvw, format);
+  if (gridEachStep) makeVtk(mesh, outDir + "/mesh_" + std::to_string(lstp) + ".vtk", uvw, format);
   makeVtkMP(mpData, outDir + "/mpData_" + std::to_string(lstp) + ".vtk", format);
 }
 

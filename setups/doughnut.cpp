@@ -139,6 +139,7 @@ Analysis setupGrid(const Params& P) {
   const double dalpha = get(P, "dalpha") * M_PI / 180, C = 2 * M_PI * holeA(P), E = get(P, "E");
   std::vector<int> inner(nc);
   for (int j = 0; j < nc; ++j) inner[j] = j;
+  an.gridMoves = true;                                          // rotated each step (or fem)
   an.beforeStep = [=](Analysis& a, int lstp) {
     if (!a.fem) a.mesh = generalMesh((X0 * rotation(-(lstp - 1) * dalpha).transpose()).eval(), T);
     conditions(a.mesh, P);

@@ -63,6 +63,7 @@ Analysis setupGrid(const Params& P) {
   Analysis an = baseAnalysis(P);
   grid(an, L0, L0);
   fillBlock(an.mpData, Vector2d::Zero(), 2, 2, an.mesh.h, P, 0.0);
+  an.gridMoves = true;                                          // mesh_<lstp>.vtk each step
   an.beforeStep = [=](Analysis& a, int lstp) {
     grid(a, L0 + (lstp - 1) * du, L0);
     const double eps = 1e-9 * L0;

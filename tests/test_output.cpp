@@ -447,6 +447,7 @@ TEST_SUITE("output") {
     const std::string dirA = std::string(AMPLE_TEST_TMP) + "/output_vtk_ascii",
                       dirB = std::string(AMPLE_TEST_TMP) + "/output_vtk_binary";
     RunOptions opt{dirA, 1, true};
+    opt.vtkGridEvery = true;                     // mesh_<lstp>.vtk of a grid that does not move
     REQUIRE(ample::ample(*s, P, opt) == 0);
     opt.outDir = dirB;
     opt.vtkFormat = VtkFormat::Binary;
@@ -481,5 +482,90 @@ TEST_SUITE("output") {
     t.ints({9, -1}, 1);
     CHECK(t.text().substr(head - 1) == "1 -2.5 0.1\n9\n-1\n");  // "ASCII" is one byte shorter
     CHECK(std::string(t.realType()) == "double");
+  }
+
+  TEST_CASE("output: the ASCII reals are the text of printf %.15g (subnormal, -0, 1e300, 15 digits, integers)") {
+    const std::vector<double> xs{0.0, -0.0, 1.0, -2.5, 0.1, 1.0 / 3.0, 123456789012345.0, 1234567890123456.0,
+                                 1e300, -1e300, 1e-300, 4.9406564584124654e-324, 2.2250738585072009e-308,
+                                 1.7976931348623157e308, 0.000123456789012345, 1e15, 1e16, 1e-5, 0.0001,
+                                 100.0, -7.0, 2.0 / 3.0 * 1e-7, 9.99999999999999e14, 9.999999999999999e14};
+    for (double x : xs) {
+      char want[64];
+      std::snprintf(want, sizeof want, "%.15g", x);     // the C library, not to_chars
+      CAPTURE(want);
+      CHECK(vtkReal(x) == std::string(want));
+    }
+    VtkWriter w(VtkFormat::Ascii, "t", "UNSTRUCTURED_GRID");
+    const size_t head = w.text().size();
+    w.reals(xs, 4);
+    std::string want;
+    for (size_t k = 0; k < xs.size(); ++k) {
+      char b[64];
+      std::snprintf(b, sizeof b, "%.15g%c", xs[k], (k + 1) % 4 == 0 ? '\n' : ' ');
+      want += b;
+    }
+    CHECK(w.text().substr(head) == want);
+  }
+
+  TEST_CASE("output: a VTK file written in chunks smaller than it equals the text kept whole") {
+    const std::string path = std::string(AMPLE_TEST_TMP) + "/output_chunked.vtk";
+    std::vector<double> x(5000);
+    for (size_t k = 0; k < x.size(); ++k) x[k] = std::sin(double(k)) * std::pow(10.0, double(k % 40) - 20);
+    std::vector<int> n(3000);
+    for (size_t k = 0; k < n.size(); ++k) n[k] = int(k * 7919 % 100003) - 50000;
+    for (VtkFormat f : {VtkFormat::Ascii, VtkFormat::Binary}) {
+      VtkWriter whole(f, "t", "UNSTRUCTURED_GRID"), chunked(f, "t", "UNSTRUCTURED_GRID", path, 1000);
+      for (VtkWriter* w : {&whole, &chunked}) {
+        w->line("POINTS 5000 x");
+        w->reals(x, 3);
+        w->line("CELLS");
+        w->ints(n, 5);
+      }
+      CHECK(!std::filesystem::exists(path));               // only path.tmp until finish()
+      CHECK(std::filesystem::file_size(path + ".tmp") <= whole.text().size());
+      chunked.finish();
+      CHECK(!std::filesystem::exists(path + ".tmp"));
+      CHECK(whole.text().size() > 20 * 1000);              // many chunks
+      CHECK(testing::fileText(path) == whole.text());
+      std::filesystem::remove(path);
+    }
+    {                                                      // not finished: no file, no tmp left
+      VtkWriter w(VtkFormat::Ascii, "t", "UNSTRUCTURED_GRID", path, 1000);
+      w.reals(x, 3);
+    }
+    CHECK(!std::filesystem::exists(path));
+    CHECK(!std::filesystem::exists(path + ".tmp"));
+  }
+
+  TEST_CASE("output: grid files written by default / in fem mode / with --vtk-grid every") {
+    // a grid that stays put: mesh.vtk once; fem=1 (the mesh follows the nodes), a setup that
+    // rebuilds its grid (stretch) or vtkGridEvery: mesh_<lstp>.vtk with each mpData file
+    const std::string root = std::string(AMPLE_TEST_TMP) + "/output_grids";
+    auto run = [&](const char* setup, const std::string& dir, bool every, bool fem) {
+      const Setup* s = findSetup(setup);
+      Params P = s->params();
+      setDefault(P, "lstps", 2);
+      if (std::string(setup) == "compaction") setDefault(P, "nelsy", 4), setDefault(P, "E", 1e6);
+      if (fem) setDefault(P, "fem", 1);
+      RunOptions opt{dir, 1, true};
+      opt.vtkGridEvery = every;
+      REQUIRE(ample::ample(*s, P, opt) == 0);
+    };
+    auto has = [](const std::string& f) { return std::filesystem::exists(f); };
+    run("compaction", root + "/default", false, false);
+    CHECK(has(root + "/default/mesh.vtk"));
+    CHECK(has(root + "/default/mpData_2.vtk"));
+    CHECK(!has(root + "/default/mesh_1.vtk"));
+    CHECK(!has(root + "/default/mesh_2.vtk"));
+    run("compaction", root + "/every", true, false);
+    CHECK(has(root + "/every/mesh.vtk"));
+    CHECK(has(root + "/every/mesh_1.vtk"));
+    CHECK(has(root + "/every/mesh_2.vtk"));
+    run("stretch", root + "/stretch", false, false);
+    CHECK(has(root + "/stretch/mesh_2.vtk"));
+    run("doughnut", root + "/fem", false, true);
+    CHECK(has(root + "/fem/mesh.vtk"));
+    CHECK(has(root + "/fem/mesh_1.vtk"));
+    CHECK(has(root + "/fem/mesh_2.vtk"));
   }
 }

@@ -123,6 +123,12 @@ static int vtkEveryOf(const std::string& text) {
   return int(v);
 }
 
+static bool vtkGridEveryOf(const std::string& text) {
+  if (text != "moved" && text != "every")
+    throw InputError("option '--vtk-grid' = '" + text + "': allowed moved (the default) or every");
+  return text == "every";
+}
+
 static VtkFormat vtkFormatOf(const std::string& text) {
   if (text != "ascii" && text != "binary")
     throw InputError("option '--vtk-format' = '" + text + "': allowed ascii (the default) or binary");
@@ -133,7 +139,8 @@ static VtkFormat vtkFormatOf(const std::string& text) {
 // an option given twice is refused
 static bool readOption(RunOptions& o, const std::vector<std::string>& args, size_t& i,
                        std::set<std::string>& seen) {
-  static const std::set<std::string> known{"--quiet", "--accept-floor", "--out", "--vtk", "--vtk-format"};
+  static const std::set<std::string> known{"--quiet", "--accept-floor", "--out", "--vtk", "--vtk-format",
+                                           "--vtk-grid"};
   const std::string a = args[i];
   if (!known.count(a)) return false;
   if (!seen.insert(a).second) throw InputError("option '" + a + "' is given twice; give it once");
@@ -144,6 +151,8 @@ static bool readOption(RunOptions& o, const std::vector<std::string>& args, size
   if (a == "--vtk") o.vtkEvery = vtkEveryOf(optionValue(args, i, "a whole number N >= 0"));
   if (a == "--vtk-format")
     o.vtkFormat = vtkFormatOf(optionValue(args, i, "a value: allowed ascii (the default) or binary"));
+  if (a == "--vtk-grid")
+    o.vtkGridEvery = vtkGridEveryOf(optionValue(args, i, "a value: allowed moved (the default) or every"));
   return true;
 }
 
@@ -160,7 +169,7 @@ static void readParam(CliRequest& req, const std::string& a, std::map<std::strin
   const size_t eq = a.find('=');
   if (eq == std::string::npos || eq == 0)
     throw InputError("cannot read argument '" + a + "': expected name=value or an option "
-                     "(--out DIR, --vtk N, --vtk-format F, --accept-floor, --quiet, --help)");
+                     "(--out DIR, --vtk N, --vtk-format F, --vtk-grid G, --accept-floor, --quiet, --help)");
   const std::string name = a.substr(0, eq), text = a.substr(eq + 1);
   const auto earlier = seen.emplace(name, text);
   if (!earlier.second)
@@ -200,11 +209,14 @@ std::string usageText() {
          "       ample --help                 this text\n"
          "       ample <setup> --help         the setup's parameters and defaults\n"
          "       ample <setup> [name=value ...] [--out DIR] [--vtk N] [--vtk-format F]\n"
-         "                                    [--accept-floor] [--quiet]\n"
+         "                                    [--vtk-grid G] [--accept-floor] [--quiet]\n"
          "  --out DIR         output folder (default output/<setup>)\n"
          "  --vtk N           write mpData_<lstp>.vtk every N load steps (default 1, 0 = none)\n"
          "  --vtk-format F    ascii (default: text, 15 digits) or binary (legacy VTK BINARY:\n"
          "                    big-endian 4-byte floats and ints, smaller and faster to write)\n"
+         "  --vtk-grid G      moved (default): mesh.vtk once, and mesh_<lstp>.vtk (the grid\n"
+         "                    with its nodal displacements) with each mpData file only\n"
+         "                    when the grid moves (fem=1, stretch, doughnut); every: always\n"
          "  --accept-floor    accept a load step whose residual stalled at its estimated\n"
          "                    round-off floor (said on stderr; off: such a step fails)\n"
          "  --quiet           no progress lines\n"
