@@ -34,6 +34,7 @@
 #include "ample/boundaries/ibStiffness.h"
 #include "linSolve.h"
 #include "ample/remedies/loadSteps.h"
+#include "ample/remedies/splitPoints.h"
 #include "plotting/postPro.h"
 #include "plotting/writeOutput.h"
 #include "ample/solver/roundOffFloor.h"
@@ -147,6 +148,7 @@ void solve(Analysis& an, RunLog& log, const RunOptions& opt) {
     timed(T.updateMPs, updateMPs, mesh, uvw, an.domainUpdate, mpData);
     if (an.fem) moveMesh(mesh, uvw);                                 // FEM: the mesh follows (MPM: reset)
     moveBoundaries(an.boundaries, lstp, inc.bcScale(an.lstps));      // [Boundaries]: by their du
+    log.splits += splitPoints(mesh, an.split, mpData, opt.quiet);    // remedy (off: nothing)
     if (!inc.last) continue;                                         // (remedy: a first half)
     if (an.afterStep) an.afterStep(an, lstp);                        // setup's hook
     timed(T.postPro, postPro, mesh, mpData, uvw, lstp, opt.vtkEvery, opt.outDir, opt.vtkFormat);
