@@ -16,7 +16,8 @@
 // failure is named on stderr. Two remedies, off by default: loadSteps.retry is
 // the one line of both in the handler of a failed step (ghost > 0: retry it with
 // the ghost penalty, on from then; substeps > 0: retry it in halves), and
-// addGhostPenalty the one line that applies the penalty in the Newton loop. The
+// addGhostPenalty the one line that applies the penalty in the Newton loop; a
+// third, split > 0, is splitPoints after updateMPs (stretched GIMP points cut in two). The
 // implicit boundaries of [Boundaries] (ibStiffness.h; none by default: nothing changes)
 // are three named lines: ibStiffness once per step, addImplicitBoundaries after
 // detMPs, moveBoundaries after updateMPs. Every timed call goes through timed(seconds, f,
