@@ -16,7 +16,8 @@
 // failure is named on stderr. Two remedies, off by default: loadSteps.retry is
 // the one line of both in the handler of a failed step (ghost > 0: retry it with
 // the ghost penalty, on from then; substeps > 0: retry it in halves), and
-// addGhostPenalty the one line that applies the penalty in the Newton loop. The
+// addGhostPenalty the one line that applies the penalty in the Newton loop; a
+// third, split > 0, is splitPoints after updateMPs (stretched GIMP points cut in two). The
 // implicit boundaries of [Boundaries] (ibStiffness.h; none by default: nothing changes)
 // are three named lines: ibStiffness once per step, addImplicitBoundaries after
 // detMPs, moveBoundaries after updateMPs. Every timed call goes through timed(seconds, f,
@@ -34,6 +35,7 @@
 #include "ample/boundaries/ibStiffness.h"
 #include "linSolve.h"
 #include "ample/remedies/loadSteps.h"
+#include "ample/remedies/splitPoints.h"
 #include "plotting/postPro.h"
 #include "plotting/writeOutput.h"
 #include "ample/solver/roundOffFloor.h"
@@ -147,6 +149,7 @@ void solve(Analysis& an, RunLog& log, const RunOptions& opt) {
     timed(T.updateMPs, updateMPs, mesh, uvw, an.domainUpdate, mpData);
     if (an.fem) moveMesh(mesh, uvw);                                 // FEM: the mesh follows (MPM: reset)
     moveBoundaries(an.boundaries, lstp, inc.bcScale(an.lstps));      // [Boundaries]: by their du
+    log.splits += splitPoints(mesh, an.split, mpData, opt.quiet);    // remedy (off: nothing)
     if (!inc.last) continue;                                         // (remedy: a first half)
     if (an.afterStep) an.afterStep(an, lstp);                        // setup's hook
     timed(T.postPro, postPro, mesh, mpData, uvw, lstp, opt.vtkEvery, opt.outDir, opt.vtkFormat, opt.vtkGridEvery || an.fem || an.gridMoves);

@@ -36,6 +36,7 @@ struct Analysis {
   std::string widerGrid;              // the setting that widens the grid, e.g. "width=32" (a
                                       // point that leaves the grid: what to try; "" none)
   double ghost = 0;                   // ghost-penalty factor of the edge cells (0: none)
+  double split = 0;                   // split GIMP points with lp(i) > split h(i) after a step (0: none)
   bool lone = true;                   // leave redundant lone-node dofs out of fd (detFDoFs)
   int ghostFrom = 0;                  // first load step the penalty was needed (0: not yet)
   Formulation formulation = Formulation::UL;        // frame of equilibrium ([Lagrangian])

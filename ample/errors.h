@@ -28,7 +28,8 @@ enum class Failure {
   NotFinite,      // a NaN or Inf in the residual
   Singular,       // Kt(fd,fd) could not be factorised or solved
   LeftGrid,       // a material point left the background grid
-  Inverted        // a converged state with det F <= 0 at a point (a loose tol, or too large a step)
+  Inverted,       // a converged state with det F <= 0 at a point (a loose tol, or too large a step)
+  DomainTooLarge  // a GIMP domain overlaps more than 3 x 3 cells (elemForMP; the remedy: split=)
 };
 struct RunError : std::runtime_error {
   Failure kind = Failure::Other;

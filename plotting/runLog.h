@@ -65,6 +65,7 @@ struct RunLog {
   int totalNRit = 0;
   int solverAnalyses = 0;       // symbolic analyses of Kt(fd,fd) (a new pattern or fd)
   int luFallbacks = 0;          // passes a symmetric solver= handed to SparseLU
+  int splits = 0;               // GIMP points cut in two by the split= remedy (splitPoints)
   bool converged = true;
   int lastConverged = 0;        // last load step that converged
   std::string message;          // why the run stopped early (empty when complete)

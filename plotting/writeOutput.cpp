@@ -152,6 +152,7 @@ static std::string summaryJson(const Setup& setup, const Params& P, const Analys
     << ",\n  \"nDoF\": " << an.mesh.nDoF() << ",\n  \"lstps\": " << an.lstps
     << ",\n  \"total_NR_iterations\": " << log.totalNRit
     << ",\n  \"solver_analyses\": " << log.solverAnalyses << ",\n  \"lu_fallbacks\": " << log.luFallbacks
+    << (an.split > 0 ? ",\n  \"splits\": " + std::to_string(log.splits) : std::string())
     << ",\n  \"converged\": " << (log.converged ? "true" : "false")
     << ",\n  \"completed\": " << (log.converged ? "true" : "false")
     << ",\n  \"last_converged_step\": " << log.lastConverged

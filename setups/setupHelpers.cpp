@@ -26,6 +26,7 @@ Analysis baseAnalysis(const Params& P) {
   checkSolverBuilt(an.solver);                  // a choice this build lacks: InputError
   an.substeps = int(get(P, "substeps"));
   an.ghost = get(P, "ghost");
+  an.split = get(P, "split");
   an.lone = get(P, "lone") != 0;
   an.formulation = Formulation(int(get(P, "formulation")));
   an.domainUpdate = DomainUpdate(int(get(P, "domainUpdate")));

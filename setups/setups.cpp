@@ -105,6 +105,10 @@ Params commonParams(int lstps) {
       Param("ghost", 0).range(0, 1e3)
           .help("remedy: ghost-penalty factor gamma on the faces of the edge cells, on from the "
                 "first load step that fails without it (0 = off, the paper's)"),
+      Param("split", 0).range(0, 10)
+          .help("remedy: after each converged load step, split a GIMP point in two along x or y where "
+                "its domain half length lp exceeds split times the cell size h (0 = off, the paper's; "
+                "0.5 keeps every domain within one cell's length)"),
       Param("lone", 1).integer(0, 1)
           .help("leave out of the free set the dofs of nodes that one point alone reaches and "
                 "that are redundant (a zero-energy mode whose pivot is round-off; 0 = the paper's "

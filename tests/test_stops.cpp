@@ -4,6 +4,7 @@
 // that, followed, completes the run.
 #include "ample/ample.h"
 #include "ample/errors.h"
+#include "ample/remedies/loadSteps.h"
 #include "testProblems.h"
 #include <doctest/doctest.h>
 #include <cmath>
@@ -152,6 +153,18 @@ TEST_SUITE("stops") {
     CHECK(advised(r.err, "ghost") == "0.01");
     REQUIRE(advised(r.err, "substeps") == "4");
     CHECK(runProgram("compaction l0=4165.31 substeps=4", "singular_large_halves").code == 0);
+  }
+
+  TEST_CASE("stops: a domain that outgrew its cells or a failed step with stretched domains names split") {
+    Analysis an = testing::smallBlock(MpType::GIMP, CmType::Elastic, 2);   // h = 1, lp = 0.25
+    const RunError tooLarge("domain too large", Failure::DomainTooLarge), diverged("diverged", Failure::NotConverged);
+    CHECK(advised(whatToTry(tooLarge, an, 1000), "split") == "0.5");
+    CHECK(whatToTry(diverged, an, 1000).find("split") == std::string::npos);  // lp = h/4: not named
+    an.mpData[0].lp(0) = 0.7;                                                  // stretched past h/2
+    CHECK(advised(whatToTry(diverged, an, 1000), "split") == "0.5");
+    CHECK(whatToTry(RunError("singular", Failure::Singular), an, 1000).find("split=0.5") != std::string::npos);
+    an.split = 0.5;                                                            // already on
+    CHECK(whatToTry(diverged, an, 1000).find("split") == std::string::npos);
   }
 
   TEST_CASE("stops: a point that leaves the grid names the setup's wider grid, which completes the run") {

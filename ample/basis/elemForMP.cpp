@@ -17,8 +17,7 @@ static std::string domainTooLarge(const Vector2d& mpC, const Vector2d& lp, const
   std::ostringstream msg;
   msg << "the domain of the material point at (" << mpC(0) << ", " << mpC(1) << ") has grown to lp = ("
       << lp(0) << ", " << lp(1) << ") against cells of " << mesh.h(0) << " x " << mesh.h(1)
-      << ": it overlaps more than 9 cells or 16 nodes; try smaller load steps (substeps=4) or "
-         "another domain update (domainUpdate=)";
+      << ": it overlaps more than 9 cells or 16 nodes";  // what to try: whatToTry (loadSteps.cpp)
   return msg.str();
 }
 
@@ -40,7 +39,7 @@ int elemForMP(const Mesh& mesh, const Vector2d& mpC, const Vector2d& lp,
       throw RunError(msg.str(), Failure::LeftGrid);
     }
     if (!(hi - lo < 1e6))  // not finite, or so wide that the cell numbers below would overflow
-      throw RunError(domainTooLarge(mpC, lp, mesh));
+      throw RunError(domainTooLarge(mpC, lp, mesh), Failure::DomainTooLarge);
     // BEGIN EXERCISE elemForMP
     if (lp(i) > 0.0) {
       first[i] = int(std::floor(lo + tol));
@@ -59,7 +58,7 @@ int elemForMP(const Mesh& mesh, const Vector2d& mpC, const Vector2d& lp,
     last[i] = std::clamp(last[i], 0, nels[i] - 1);    // edge is cut there, as in the paper
   }
   const int cx = last[0] - first[0] + 1, cy = last[1] - first[1] + 1;  // cells in x and y
-  if (cx * cy > MAXE || (cx + 1) * (cy + 1) > MAXN) throw RunError(domainTooLarge(mpC, lp, mesh));
+  if (cx * cy > MAXE || (cx + 1) * (cy + 1) > MAXN) throw RunError(domainTooLarge(mpC, lp, mesh), Failure::DomainTooLarge);
   int ne = 0;
   for (int j = first[1]; j <= last[1]; ++j)
     for (int i = first[0]; i <= last[0]; ++i) eIN[ne++] = j * mesh.nelsx + i;

@@ -56,15 +56,33 @@ static std::string smallerSteps(const Analysis& an, int lstpsMax) {
   return "; try " + sub + (lstps.empty() ? "" : " or " + lstps);
 }
 
+// the split= remedy when a GIMP domain has outgrown half a cell (lp(i) > h(i) / 2), else ""
+static std::string splitAdvice(const Analysis& an) {
+  if (an.split > 0 || !an.mesh.regular()) return "";
+  double r = 0;                                                   // the largest lp(i) / h(i)
+  for (const MaterialPoint& mp : an.mpData)
+    if (mp.mpType == MpType::GIMP)
+      for (int i = 0; i < nD; ++i) r = std::max(r, mp.lp(i) / an.mesh.h(i));
+  if (r <= 0.5) return "";
+  char buf[200];
+  std::snprintf(buf, sizeof buf, "; GIMP domains have grown to lp = %.2f h: try split=0.5 (a point with "
+                "lp > h/2 is cut in two after each load step)", r);
+  return buf;
+}
+
 std::string whatToTry(const RunError& e, const Analysis& an, int lstpsMax) {
   switch (e.kind) {
+    case Failure::DomainTooLarge:
+      return an.split > 0 ? "; try a smaller split= (cut the domains earlier)" + smallerSteps(an, lstpsMax)
+                          : "; try split=0.5 (a GIMP point with lp > h/2 is cut in two after each load step)";
     case Failure::NotConverged:
     case Failure::Stalled:
-    case Failure::NotFinite: return smallerSteps(an, lstpsMax);
+    case Failure::NotFinite: return splitAdvice(an) + smallerSteps(an, lstpsMax);
     case Failure::Singular: {  // a nearly empty cell, or a load step so large that cells empty
       const std::string halves = an.substeps >= 30 ? std::string("more points per cell (mp)")
           : "substeps=" + std::to_string(an.substeps ? std::min(30, 2 * an.substeps) : 4) +
             " (a failed load step is retried in halves)";
+      if (!splitAdvice(an).empty()) return splitAdvice(an) + "; or " + halves;
       if (an.mesh.regular() && an.ghost == 0)
         return "; try ghost=0.01 (the ghost penalty pins the nearly free nodes of barely filled cells) or " +
                halves + "; with neither, check the boundary conditions";
