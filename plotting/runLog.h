@@ -65,6 +65,8 @@ struct RunLog {
   int totalNRit = 0;
   int solverAnalyses = 0;       // symbolic analyses of Kt(fd,fd) (a new pattern or fd)
   int luFallbacks = 0;          // passes a symmetric solver= handed to SparseLU
+  long factorisations = 0;      // numeric factorisations of Kt(fd,fd)
+  long krylovSolves = 0, krylovIterations = 0;  // solver=KRYLOV: Krylov solves tried, iterations
   bool converged = true;
   int lastConverged = 0;        // last load step that converged
   std::string message;          // why the run stopped early (empty when complete)

@@ -152,6 +152,8 @@ static std::string summaryJson(const Setup& setup, const Params& P, const Analys
     << ",\n  \"nDoF\": " << an.mesh.nDoF() << ",\n  \"lstps\": " << an.lstps
     << ",\n  \"total_NR_iterations\": " << log.totalNRit
     << ",\n  \"solver_analyses\": " << log.solverAnalyses << ",\n  \"lu_fallbacks\": " << log.luFallbacks
+    << ",\n  \"factorisations\": " << log.factorisations << ",\n  \"krylov_solves\": " << log.krylovSolves
+    << ",\n  \"krylov_iterations\": " << log.krylovIterations
     << ",\n  \"converged\": " << (log.converged ? "true" : "false")
     << ",\n  \"completed\": " << (log.converged ? "true" : "false")
     << ",\n  \"last_converged_step\": " << log.lastConverged
