@@ -362,6 +362,7 @@ static void recordStep(RunLog& log, const Increment& inc, int NRit, double fErr,
   log.totalNRit += NRit;
   log.solverAnalyses = Kff.builds;                                   // so far (summary.json)
   log.luFallbacks = Kff.fallbacks;
+  log.factorisations = Kff.factorisations, log.krylovSolves = Kff.krylovSolves, log.krylovIterations = Kff.krylovIterations;
   log.steps.push_back({inc.lstp, inc.lf1, NRit, fErr, converged, 0.0});
 }
 

@@ -5,6 +5,7 @@
 //--------------------------------------------------------------------------
 #include "linSolve.h"
 #include "errors.h"
+#include "solver/krylov.h"
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -32,13 +33,9 @@ static bool symmetric(const SpMat& K) {
 
 // normwise backward error of x for K x = b: ||K x - b|| / (||K|| ||x|| + ||b||), infinity norms
 // (the relative change of K and b that x solves exactly; round-off gives ~1e-16 whatever
-// the condition of K, an unstable factorisation much more)
+// the condition of K, an unstable factorisation much more): krylov.cpp
 static double backwardError(const SpMat& K, const Eigen::VectorXd& x, const Eigen::VectorXd& b) {
-  Eigen::VectorXd rowSum = Eigen::VectorXd::Zero(K.rows());
-  for (int k = 0; k < K.outerSize(); ++k)
-    for (SpMat::InnerIterator it(K, k); it; ++it) rowSum(it.row()) += std::abs(it.value());
-  const double scale = rowSum.maxCoeff() * x.lpNorm<Eigen::Infinity>() + b.lpNorm<Eigen::Infinity>();
-  return (K * x - b).lpNorm<Eigen::Infinity>() / (scale + 1e-300);
+  return backwardError(K, infNorm(K), x, b);
 }
 
 // a symmetric solver (LDLT, LDLT_METIS, CHOLMOD) factorises K (no pivoting) and solves;
@@ -46,8 +43,10 @@ static double backwardError(const SpMat& K, const Eigen::VectorXd& x, const Eige
 // (a relative residual would refuse the ill-conditioned column of 2^14 cells: 1e-9..2e-8
 // there with a backward error of 1e-16)
 template <class SymmetricSolver>
-static bool symmetricSolve(SymmetricSolver& s, const SpMat& K, const Eigen::VectorXd& rhs, Eigen::VectorXd& x) {
+static bool symmetricSolve(SymmetricSolver& s, const SpMat& K, const Eigen::VectorXd& rhs, Eigen::VectorXd& x,
+                           long& factorisations) {
   s.factorize(K);
+  factorisations++;
   if (s.info() != Eigen::Success) return false;
   x = s.solve(rhs);
   return x.allFinite() && backwardError(K, x, rhs) <= 1e-12;  // (Eigen's max norms skip NaN)
@@ -56,25 +55,70 @@ static bool symmetricSolve(SymmetricSolver& s, const SpMat& K, const Eigen::Vect
 // the chosen symmetric solver on S.Kff; false for LU and UMFPACK
 static bool chosenSymmetricSolve(FreeSystem& S, const Eigen::VectorXd& rhs, Eigen::VectorXd& x) {
   switch (S.choice) {
-    case LinearSolver::LDLT: return symmetricSolve(S.ldlt, S.Kff, rhs, x);
+    case LinearSolver::LDLT: return symmetricSolve(S.ldlt, S.Kff, rhs, x, S.factorisations);
 #ifdef AMPLE_HAVE_METIS
-    case LinearSolver::LDLT_METIS: return symmetricSolve(S.ldltMetis, S.Kff, rhs, x);
+    case LinearSolver::LDLT_METIS: return symmetricSolve(S.ldltMetis, S.Kff, rhs, x, S.factorisations);
 #endif
 #ifdef AMPLE_HAVE_SUITESPARSE
-    case LinearSolver::CHOLMOD: return symmetricSolve(S.cholmod, S.Kff, rhs, x);
+    case LinearSolver::CHOLMOD: return symmetricSolve(S.cholmod, S.Kff, rhs, x, S.factorisations);
 #endif
     default: return false;
   }
 }
 
+// SparseLU's numeric factorisation of S.Kff and the solve; RunError when it fails
+static Eigen::VectorXd luSolve(FreeSystem& S, const Eigen::VectorXd& rhs) {
+  if (!S.luAnalysed) S.lu.analyzePattern(S.Kff);        // once per pattern
+  S.luAnalysed = true;
+  S.lu.factorize(S.Kff);                                // numeric factorisation only
+  S.factorisations++;
+  if (S.lu.info() != Eigen::Success)
+    throw RunError("SparseLU could not factorise the stiffness Kt(fd,fd) (" + S.lu.lastErrorMessage() +
+                   "): the problem is singular, e.g. a rigid-body mode without enough boundary conditions "
+                   "or a nearly empty cell", Failure::Singular);
+  return S.lu.solve(rhs);
+}
+
+// solver=KRYLOV (freeSystem.h): a pass after the first of a load step (NRit > 1) with a factor
+// held is solved by PCG (factor and Kff symmetric) or GMRES preconditioned with that factor,
+// from x = 0 to a backward error of 1e-14; one that reaches 1e-12 within krylovMaxIt
+// iterations is accepted. Otherwise (or at NRit == 1) Kff is factorised, LDLT when symmetric
+// and its solve is accepted, else SparseLU, solved directly, and the factor kept for the step
+static Eigen::VectorXd krylovSolve(FreeSystem& S, const Eigen::VectorXd& rhs, int NRit) {
+  using Eigen::VectorXd;
+  if (NRit > 1 && S.factorHeld) {
+    VectorXd x = VectorXd::Zero(rhs.size());
+    KrylovResult k;
+    const Preconditioner byLDLT = [&S](const VectorXd& r) { return VectorXd(S.ldlt.solve(r)); };
+    const Preconditioner byLU = [&S](const VectorXd& r) { return VectorXd(S.lu.solve(r)); };
+    if (S.factorSymmetric && symmetric(S.Kff)) k = pcg(S.Kff, byLDLT, rhs, x, S.krylovMaxIt, 1e-14);
+    else k = gmres(S.Kff, S.factorSymmetric ? byLDLT : byLU, rhs, x, S.krylovMaxIt, 1e-14);
+    S.krylovSolves++;
+    S.krylovIterations += k.iterations;
+    if (x.allFinite() && k.backwardError <= 1e-12) return x;
+  }
+  S.factorHeld = false;
+  VectorXd x;
+  if (symmetric(S.Kff) && symmetricSolve(S.ldlt, S.Kff, rhs, x, S.factorisations)) {
+    S.factorSymmetric = S.factorHeld = true;
+    return x;
+  }
+  x = luSolve(S, rhs);
+  S.factorSymmetric = false;
+  S.factorHeld = true;
+  return x;
+}
+
 // numeric factorisation of S.Kff and the solve: SparseLU (solver=LU), UMFPACK, or a symmetric
 // solver when Kff is symmetric and its solve succeeds (else SparseLU); RunError when LU fails
-static Eigen::VectorXd factorisedSolve(FreeSystem& S, const Eigen::VectorXd& rhs) {
+static Eigen::VectorXd factorisedSolve(FreeSystem& S, const Eigen::VectorXd& rhs, int NRit) {
+  if (S.choice == LinearSolver::KRYLOV) return krylovSolve(S, rhs, NRit);
   const std::string singular = "): the problem is singular, e.g. a rigid-body mode without enough "
                                "boundary conditions or a nearly empty cell";
 #ifdef AMPLE_HAVE_SUITESPARSE
   if (S.choice == LinearSolver::UMFPACK) {
     S.umfpack.factorize(S.Kff);                         // numeric factorisation only
+    S.factorisations++;
     if (S.umfpack.info() != Eigen::Success)
       throw RunError("UMFPACK could not factorise the stiffness Kt(fd,fd) (status " +
                      std::to_string(S.umfpack.umfpackFactorizeReturncode()) + singular, Failure::Singular);
@@ -88,13 +132,7 @@ static Eigen::VectorXd factorisedSolve(FreeSystem& S, const Eigen::VectorXd& rhs
       std::fprintf(stderr, "solver=%s: Kt(fd,fd) not symmetric to 1e-12, or its factorisation failed or was "
                            "inexact: SparseLU solves such passes\n", solverNames()[size_t(S.choice)].c_str());
   }
-  if (!S.luAnalysed) S.lu.analyzePattern(S.Kff);        // once per pattern
-  S.luAnalysed = true;
-  S.lu.factorize(S.Kff);                                // numeric factorisation only
-  if (S.lu.info() != Eigen::Success)
-    throw RunError("SparseLU could not factorise the stiffness Kt(fd,fd) (" + S.lu.lastErrorMessage() + singular,
-                   Failure::Singular);
-  return S.lu.solve(rhs);
+  return luSolve(S, rhs);
 }
 
 LinSolveOut linSolve(const std::vector<BC>& bc, const SpMat& Kt, const Eigen::VectorXd& oobf,
@@ -118,7 +156,7 @@ LinSolveOut linSolve(const std::vector<BC>& bc, const SpMat& Kt, const Eigen::Ve
   Eigen::VectorXd rhs(nfd);
   for (int r = 0; r < nfd; ++r) rhs(r) = oobf(fd[r]) - Kd(fd[r]);
 
-  const Eigen::VectorXd x = factorisedSolve(S, rhs);
+  const Eigen::VectorXd x = factorisedSolve(S, rhs, NRit);
   const double res = (S.Kff * x - rhs).norm(), scale = rhs.norm() + 1e-300;
   if (!(res <= 1e-3 * scale))                           // a zero pivot: no solution exists
     throw RunError("the stiffness Kt(fd,fd) is singular (linear solve residual " +

@@ -36,9 +36,11 @@ void buildFreeSystem(const SpMat& Kt, const std::vector<int>& fd, FreeSystem& S)
   checkSolverBuilt(S.choice);
   extractFreeSystem(Kt, fd, S);
   S.luAnalysed = false;                                 // LU (or a fallback) analyses it when needed
+  S.factorHeld = false;                                 // KRYLOV: a new pattern, no factor of it
   switch (S.choice) {                                   // symbolic analysis, once per pattern
     case LinearSolver::LU: break;
-    case LinearSolver::LDLT: S.ldlt.analyzePattern(S.Kff); break;
+    case LinearSolver::LDLT:
+    case LinearSolver::KRYLOV: S.ldlt.analyzePattern(S.Kff); break;
 #ifdef AMPLE_HAVE_METIS
     case LinearSolver::LDLT_METIS: S.ldltMetis.analyzePattern(S.Kff); break;
 #endif

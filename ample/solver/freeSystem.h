@@ -20,6 +20,13 @@
 //   LDLT_METIS  the same with METIS (built with AMPLE_METIS)  } Kt(fd,fd) is symmetric
 //   CHOLMOD     CHOLMOD supernodal LL^T (AMPLE_SUITESPARSE)   } to 1e-12, else SparseLU
 //   UMFPACK     UMFPACK's LU (AMPLE_SUITESPARSE)
+//   KRYLOV      one numeric factorisation a load step (at NRit == 1: LDLT
+//               when Kt(fd,fd) is symmetric, else SparseLU); the later passes
+//               of the step by PCG (symmetric) or restarted GMRES (krylov.h)
+//               preconditioned with it, to a backward error of 1e-14; a pass
+//               whose Krylov solve needs more than krylovMaxIt iterations or
+//               misses 1e-12 refactorises and solves directly, and its factor
+//               preconditions the passes after it
 // A symmetric choice whose pass is not symmetric (or whose factorisation
 // fails, e.g. LL^T of an indefinite Kt, or whose solve has a backward error
 // above 1e-12: linSolve.cpp) falls back to SparseLU for that pass,
@@ -66,6 +73,11 @@ struct FreeSystem {
   Eigen::UmfPackLU<SpMat> umfpack;             // UMFPACK
 #endif
   int builds = 0, fallbacks = 0;               // analyses run; symmetric passes solved by LU
+  bool factorHeld = false;                     // KRYLOV: ldlt or lu holds a factor of this step
+  bool factorSymmetric = false;                // KRYLOV: that factor is ldlt's (Kff was symmetric)
+  int krylovMaxIt = 30;                        // KRYLOV: iterations before it refactorises
+  long factorisations = 0;                     // numeric factorisations (summary.json)
+  long krylovSolves = 0, krylovIterations = 0; // KRYLOV: Krylov solves tried, iterations spent
 };
 
 // S.Kff = Kt(fd,fd) and S.fromKt, no analysis (buildFreeSystem's first half; the benchmark's)

@@ -9,7 +9,7 @@
 namespace ample {
 
 const std::vector<std::string>& solverNames() {
-  static const std::vector<std::string> names{"LU", "LDLT", "LDLT_METIS", "CHOLMOD", "UMFPACK"};
+  static const std::vector<std::string> names{"LU", "LDLT", "LDLT_METIS", "CHOLMOD", "UMFPACK", "KRYLOV"};
   return names;
 }
 

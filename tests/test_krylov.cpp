@@ -1,0 +1,163 @@
+// Tests of the Krylov solves of solver=KRYLOV (ample/solver/krylov.h) and of linSolve with
+// solver=KRYLOV: PCG on a symmetric positive definite matrix and right-preconditioned GMRES
+// on an unsymmetric one against a dense LU solve (Eigen's PartialPivLU, not the code under
+// test); an exact preconditioner converges in 1 iteration, a perturbed one in a few, a bad one
+// spends the iterations allowed; the backward error against its definition on a hand case;
+// linSolve's counters: one factorisation a load step, a refactorisation when Kt(fd,fd) changes
+// too much for the held factor.
+#include "ample/linSolve.h"
+#include "ample/solver/krylov.h"
+#include <doctest/doctest.h>
+#include <Eigen/Dense>
+#include <cmath>
+
+using namespace ample;
+using Eigen::MatrixXd;
+using Eigen::VectorXd;
+
+namespace {
+// a 1D Laplacian (2 on the diagonal, -1 beside) plus shift on the diagonal and, when
+// unsym != 0, unsym added above the diagonal only: SPD for unsym = 0
+SpMat tridiagonal(int n, double shift, double unsym) {
+  std::vector<Eigen::Triplet<double>> t;
+  for (int i = 0; i < n; ++i) {
+    t.emplace_back(i, i, 2.0 + shift);
+    if (i + 1 < n) t.emplace_back(i, i + 1, -1.0 + unsym), t.emplace_back(i + 1, i, -1.0);
+  }
+  SpMat K(n, n);
+  K.setFromTriplets(t.begin(), t.end());
+  return K;
+}
+VectorXd load(int n) {
+  VectorXd b(n);
+  for (int i = 0; i < n; ++i) b(i) = std::cos(0.3 * i) + 0.1 * i;
+  return b;
+}
+// M = (K of another shift)^-1 by a dense LU: exact when shift is K's own
+Preconditioner inverseOf(const SpMat& P) {
+  const Eigen::PartialPivLU<MatrixXd> lu{MatrixXd(P)};
+  return [lu](const VectorXd& r) { return VectorXd(lu.solve(r)); };
+}
+}  // namespace
+
+TEST_SUITE("krylov") {
+  TEST_CASE("krylov: the backward error of a 2 x 2 system by hand") {
+    SpMat K(2, 2);
+    K.insert(0, 0) = 2, K.insert(0, 1) = -1, K.insert(1, 1) = 3;   // row sums 3 and 3: ||K|| = 3
+    VectorXd x(2), b(2);
+    x << 1, 1;                                                     // K x = (1, 3)
+    b << 1, 2;                                                     // residual (0, 1)
+    CHECK(infNorm(K) == doctest::Approx(3.0));
+    CHECK(backwardError(K, infNorm(K), x, b) == doctest::Approx(1.0 / (3.0 * 1 + 2)));
+  }
+  TEST_CASE("krylov: PCG with the exact inverse converges in 1 iteration; with a perturbed one in a few") {
+    const int n = 40;
+    const SpMat K = tridiagonal(n, 0.01, 0.0);
+    const VectorXd b = load(n), ref = MatrixXd(K).partialPivLu().solve(b);
+    VectorXd x = VectorXd::Zero(n);
+    const KrylovResult exact = pcg(K, inverseOf(K), b, x, 30, 1e-14);
+    CHECK(exact.iterations == 1);
+    CHECK(exact.converged);
+    CHECK((x - ref).norm() <= 1e-10 * ref.norm());
+    x.setZero();
+    const KrylovResult near = pcg(K, inverseOf(tridiagonal(n, 0.02, 0.0)), b, x, 30, 1e-14);
+    MESSAGE("PCG, preconditioner of a diagonal 1% off: ", near.iterations, " iterations");
+    CHECK(near.converged);
+    CHECK(near.iterations > 1);
+    CHECK(near.iterations <= 10);
+    CHECK((x - ref).norm() <= 1e-10 * ref.norm());
+    CHECK(near.backwardError <= 1e-14);
+  }
+  TEST_CASE("krylov: GMRES with the exact inverse converges in 1 iteration; with a perturbed one in a few") {
+    const int n = 40;
+    const SpMat K = tridiagonal(n, 0.01, 0.4);                    // unsymmetric
+    const VectorXd b = load(n), ref = MatrixXd(K).partialPivLu().solve(b);
+    VectorXd x = VectorXd::Zero(n);
+    const KrylovResult exact = gmres(K, inverseOf(K), b, x, 30, 1e-14);
+    CHECK(exact.iterations == 1);
+    CHECK(exact.converged);
+    CHECK((x - ref).norm() <= 1e-10 * ref.norm());
+    x.setZero();
+    const KrylovResult near = gmres(K, inverseOf(tridiagonal(n, 0.02, 0.38)), b, x, 30, 1e-14);
+    MESSAGE("GMRES, preconditioner of a matrix ~1% off: ", near.iterations, " iterations");
+    CHECK(near.converged);
+    CHECK(near.iterations > 1);
+    CHECK(near.iterations <= 10);
+    CHECK((x - ref).norm() <= 1e-10 * ref.norm());
+    CHECK(near.backwardError <= 1e-14);
+  }
+  TEST_CASE("krylov: a bad preconditioner spends the iterations allowed without convergence") {
+    const int n = 200;
+    const SpMat K = tridiagonal(n, 1e-4, 0.0);                    // condition ~ 4e4
+    const VectorXd b = load(n);
+    const Preconditioner identity = [](const VectorXd& r) { return r; };
+    VectorXd x = VectorXd::Zero(n);
+    const KrylovResult p = pcg(K, identity, b, x, 5, 1e-14);
+    CHECK(!p.converged);
+    CHECK(p.iterations == 5);
+    x.setZero();
+    const KrylovResult g = gmres(K, identity, b, x, 5, 1e-14);
+    CHECK(!g.converged);
+    CHECK(g.iterations == 5);
+  }
+  TEST_CASE("krylov: linSolve with solver=KRYLOV factorises once a load step and solves later passes by PCG") {
+    const int n = 30;
+    std::vector<int> fd(n);
+    for (int i = 0; i < n; ++i) fd[i] = i;
+    const VectorXd b = load(n);
+    FreeSystem S;
+    S.choice = LinearSolver::KRYLOV;
+    const LinSolveOut first = linSolve({}, tridiagonal(n, 0.01, 0.0), b, 1, fd, &S);
+    CHECK(S.factorisations == 1);
+    CHECK(S.krylovSolves == 0);
+    const SpMat K2 = tridiagonal(n, 0.012, 0.0);                  // the next pass: Kt changed a little
+    const LinSolveOut second = linSolve({}, K2, b, 2, fd, &S);
+    const VectorXd ref = MatrixXd(K2).partialPivLu().solve(b);
+    CHECK((second.duvw - ref).norm() <= 1e-10 * ref.norm());
+    CHECK(S.factorisations == 1);                                 // no new factorisation
+    CHECK(S.krylovSolves == 1);
+    CHECK(S.krylovIterations >= 2);
+    CHECK(S.krylovIterations <= 10);
+    linSolve({}, K2, b, 1, fd, &S);                               // a new load step: factorised again
+    CHECK(S.factorisations == 2);
+    CHECK(S.krylovSolves == 1);
+    CHECK((first.duvw - MatrixXd(tridiagonal(n, 0.01, 0.0)).partialPivLu().solve(b)).norm() <= 1e-10 * ref.norm());
+  }
+  TEST_CASE("krylov: linSolve with solver=KRYLOV refactorises when the held factor is too far off") {
+    const int n = 200;
+    std::vector<int> fd(n);
+    for (int i = 0; i < n; ++i) fd[i] = i;
+    const VectorXd b = load(n);
+    FreeSystem S;
+    S.choice = LinearSolver::KRYLOV;
+    S.krylovMaxIt = 3;
+    linSolve({}, tridiagonal(n, 1e-4, 0.0), b, 1, fd, &S);
+    const SpMat far = tridiagonal(n, 1.0, 0.0);                   // a very different pass
+    const LinSolveOut x = linSolve({}, far, b, 2, fd, &S);
+    CHECK(S.krylovSolves == 1);
+    CHECK(S.krylovIterations == 3);                               // spent, then refactorised
+    CHECK(S.factorisations == 2);
+    const VectorXd ref = MatrixXd(far).partialPivLu().solve(b);
+    CHECK((x.duvw - ref).norm() <= 1e-12 * ref.norm());
+    linSolve({}, far, b, 3, fd, &S);                              // the new factor is exact: 1 iteration
+    CHECK(S.factorisations == 2);
+    CHECK(S.krylovIterations == 4);
+  }
+  TEST_CASE("krylov: linSolve with solver=KRYLOV on an unsymmetric Kt uses SparseLU and GMRES") {
+    const int n = 30;
+    std::vector<int> fd(n);
+    for (int i = 0; i < n; ++i) fd[i] = i;
+    const VectorXd b = load(n);
+    FreeSystem S;
+    S.choice = LinearSolver::KRYLOV;
+    linSolve({}, tridiagonal(n, 0.01, 0.3), b, 1, fd, &S);
+    CHECK(!S.factorSymmetric);
+    const SpMat K2 = tridiagonal(n, 0.012, 0.31);
+    const LinSolveOut x = linSolve({}, K2, b, 2, fd, &S);
+    const VectorXd ref = MatrixXd(K2).partialPivLu().solve(b);
+    CHECK((x.duvw - ref).norm() <= 1e-10 * ref.norm());
+    CHECK(S.factorisations == 1);
+    CHECK(S.krylovSolves == 1);
+    CHECK(S.krylovIterations >= 2);
+  }
+}
