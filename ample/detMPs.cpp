@@ -50,7 +50,8 @@ PointTerms finiteStrainPoint(const Matrix3d& dF, const Matrix3d& bEn, Formulatio
                              MaterialPoint& mp) {                // bEn = exp(2 eps_e,n), eq 9
   mp.F = dF * mp.Fn;                                            // eq 7
   const Matrix3d BeT = dF * bEn * dF.transpose();               // eq 8
-  const Vector6d epsEtr = tensorToStrain(0.5 * symLog(BeT));    // eq 10
+  const InPlaneEigen eig = inPlaneEigen(BeT);                   // once for eq 10 and eq A.2
+  const Vector6d epsEtr = tensorToStrain(0.5 * symLog(eig));    // eq 10
 
   const ConstOut cm = constitutive(epsEtr, mp);                 // eqs 5, 11
   mp.epsE = cm.epsE;
@@ -58,7 +59,7 @@ PointTerms finiteStrainPoint(const Matrix3d& dF, const Matrix3d& bEn, Formulatio
 
   PointTerms t;
   if (form == Formulation::UL) {                                // [AMPLE] eqs 14-18
-    t.A = formULstiff2D(mp.F, cm.D, mp.sig, BeT);               // [Lagrangian] eq A.1
+    t.A = formULstiff2D(mp.F, cm.D, mp.sig, BeT, dLogdB2D(eig)); // [Lagrangian] eq A.1
     const Eigen::Matrix2d iF = dF.topLeftCorner<2, 2>().inverse();
     t.dSx.leftCols(mp.nn) = iF.transpose() * mp.dSvp.leftCols(mp.nn);  // eq 18: dS/dx
     t.Vp = dF.determinant() * mp.vp;                            // eq 15

@@ -55,11 +55,11 @@ Matrix9d formULstiff(const Matrix3d& F, const Matrix6d& D, const Vector6d& sig,
   // END EXERCISE
 }
 
-Matrix4d dLogdB2D(const Matrix3d& b) {
-  Eigen::SelfAdjointEigenSolver<Eigen::Matrix2d> es;
-  es.computeDirect(b.topLeftCorner<2, 2>());
-  const Eigen::Vector2d lam = es.eigenvalues();
-  const Eigen::Matrix2d& n = es.eigenvectors();
+Matrix4d dLogdB2D(const Matrix3d& b) { return dLogdB2D(inPlaneEigen(b)); }
+
+Matrix4d dLogdB2D(const InPlaneEigen& b) {
+  const Eigen::Vector2d& lam = b.lam;
+  const Eigen::Matrix2d& n = b.n;
   Matrix4d L = Matrix4d::Zero();
   for (int a = 0; a < 2; ++a)
     for (int c = 0; c < 2; ++c) {
@@ -79,8 +79,12 @@ Matrix4d elasticBlock2D(const Matrix6d& D) {
 
 Matrix4d formULstiff2D(const Matrix3d& F, const Matrix6d& D, const Vector6d& sig,
                        const Matrix3d& BeT) {
+  return formULstiff2D(F, D, sig, BeT, dLogdB2D(BeT));  // L: in-plane block of d ln(b)/db
+}
+
+Matrix4d formULstiff2D(const Matrix3d& F, const Matrix6d& D, const Vector6d& sig,
+                       const Matrix3d& BeT, const Matrix4d& L) {
   // BEGIN EXERCISE formULstiff
-  const Matrix4d L = dLogdB2D(BeT);               // in-plane block of d ln(b)/db
   const Matrix4d D4 = elasticBlock2D(D);
   Matrix4d B4, S4 = Matrix4d::Zero();
   for (int i = 0; i < 2; ++i)

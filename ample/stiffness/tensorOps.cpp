@@ -40,17 +40,25 @@ Vector6d tensorToStress(const Matrix3d& t) {
 // f(A) = V f(lambda) V' for a symmetric A. Plane strain keeps A block diagonal
 // (A_xz = A_yz = 0): then the in-plane 2x2 block is decomposed in closed form and
 // the zz entry is mapped directly, which gives the same tensor at a third of the cost.
+InPlaneEigen inPlaneEigen(const Matrix3d& A) {
+  Eigen::SelfAdjointEigenSolver<Eigen::Matrix2d> es;
+  es.computeDirect(A.topLeftCorner<2, 2>());
+  return {es.eigenvalues(), es.eigenvectors(), A(2, 2)};
+}
+
+template <class Fn>
+static Matrix3d symFunction(const InPlaneEigen& e, Fn f) {
+  const Eigen::Vector2d d = e.lam.unaryExpr(f);
+  Matrix3d R = Matrix3d::Zero();
+  R.topLeftCorner<2, 2>() = e.n * d.asDiagonal() * e.n.transpose();
+  R(2, 2) = f(e.zz);
+  return R;
+}
+
 template <class Fn>
 static Matrix3d symFunction(const Matrix3d& A, Fn f) {
-  if (A(0, 2) == 0.0 && A(1, 2) == 0.0 && A(2, 0) == 0.0 && A(2, 1) == 0.0) {
-    Eigen::SelfAdjointEigenSolver<Eigen::Matrix2d> es;
-    es.computeDirect(A.topLeftCorner<2, 2>());
-    const Eigen::Vector2d d = es.eigenvalues().unaryExpr(f);
-    Matrix3d R = Matrix3d::Zero();
-    R.topLeftCorner<2, 2>() = es.eigenvectors() * d.asDiagonal() * es.eigenvectors().transpose();
-    R(2, 2) = f(A(2, 2));
-    return R;
-  }
+  if (A(0, 2) == 0.0 && A(1, 2) == 0.0 && A(2, 0) == 0.0 && A(2, 1) == 0.0)
+    return symFunction(inPlaneEigen(A), f);
   Eigen::SelfAdjointEigenSolver<Matrix3d> es(A);
   const Vector3d d = es.eigenvalues().unaryExpr(f);
   return es.eigenvectors() * d.asDiagonal() * es.eigenvectors().transpose();
@@ -62,6 +70,10 @@ Matrix3d symExp(const Matrix3d& A) {
 
 Matrix3d symLog(const Matrix3d& A) {
   return symFunction(A, [](double x) { return std::log(x); });
+}
+
+Matrix3d symLog(const InPlaneEigen& e) {
+  return symFunction(e, [](double x) { return std::log(x); });
 }
 
 Matrix3d stretchTensor(const Matrix3d& F) {

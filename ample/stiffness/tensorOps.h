@@ -22,4 +22,16 @@ Matrix3d symExp(const Matrix3d& A);            // exp of a symmetric tensor
 Matrix3d symLog(const Matrix3d& A);            // log of a symmetric positive definite tensor
 Matrix3d stretchTensor(const Matrix3d& F);     // U = sqrt(F'F), the right stretch tensor
 
+// the spectral decomposition of a plane-strain (block diagonal) symmetric tensor: the
+// in-plane block's eigenvalues lam and eigenvectors n (columns), and the zz entry. The
+// point loop decomposes the trial b_e once and takes both ln(b_e) (eq 10) and its
+// derivative (formULstiff2D) from it.
+struct InPlaneEigen {
+  Eigen::Vector2d lam;
+  Eigen::Matrix2d n;
+  double zz;
+};
+InPlaneEigen inPlaneEigen(const Matrix3d& A);  // A block diagonal (A_xz = A_yz = 0)
+Matrix3d symLog(const InPlaneEigen& e);        // = symLog(A) for that A, the same numbers
+
 }  // namespace ample
