@@ -7,10 +7,11 @@
 // each run come from its summary.json. Suites (all when none is named):
 //   compaction  error (eq 37) and time, nelsy = 2^2..2^13, mpType 1-4
 //   scaling     run time and memory against points: compaction to 2^20 points, with
-//               solver=LU (the default) and solver=LDLT
+//               solver=LU (the default), solver=LDLT and solver=KRYLOV
 //   scaling2d   the same for the collapse refined to 147,456 points (a = 2..16, 6x6
-//               points per cell), with solver=LU (the default) and solver=LDLT, and to
-//               589,824 points (a = 32) with solver=LDLT
+//               points per cell), with solver=LU (the default), LDLT and KRYLOV, and to
+//               589,824 points (a = 32) with LDLT and KRYLOV; both suites report the
+//               factorisations, Krylov solves and iterations of each run
 //   threads     the point loop on 1 and 2 OpenMP threads (AMPLE_OPENMP): collapse a = 8,
 //               16 (solver=LDLT), compaction 2^16 cells
 //   beam        tip displacement for a = 1, 2, 4 (6x6) and mp = 2, 3, 4 (a = 2),
@@ -154,8 +155,10 @@ std::vector<Suite> suites(bool quick) {
       comp.cases.push_back(A({"compaction", "mpType=" + std::to_string(t), "nelsy=" + std::to_string(1 << e)}));
   all.push_back(comp);
 
+  const std::vector<std::string> solves{"factorisations", "krylov_solves", "krylov_iterations"};
   Suite scal{"scaling", {}, {"error"}};
-  for (const char* solver : {"", "solver=LDLT"})   // SparseLU (the default) and LDLT
+  scal.extra.insert(scal.extra.end(), solves.begin(), solves.end());
+  for (const char* solver : {"", "solver=LDLT", "solver=KRYLOV"})  // SparseLU (the default), LDLT, KRYLOV
     for (int e = 10; e <= (quick ? 12 : 18); ++e) {  // from 2^16 cells the residual floor of the
       Args c = A({"compaction", "nelsy=" + std::to_string(1 << e),  // column lies near 1e-9:
                   e >= 16 ? "tol=1e-8" : "tol=1e-9"});              // tol 1e-8 there
@@ -164,9 +167,10 @@ std::vector<Suite> suites(bool quick) {
     }
   all.push_back(scal);
   Suite scal2{"scaling2d", {}, {"extent", "height"}};  // the collapse refined: the solver shows
-  for (const char* solver : {"solver=LU", "solver=LDLT"})  // (NRitMax 20: the finest run needs
-    for (int a : {2, 4, 8, 16, 32})                        // 11 passes); a = 32 (589,824 points)
-      if ((!quick || a <= 4) && (a < 32 || std::string(solver) == "solver=LDLT"))  // with LDLT only (LU: ~20 min)
+  scal2.extra.insert(scal2.extra.end(), solves.begin(), solves.end());
+  for (const char* solver : {"solver=LU", "solver=LDLT", "solver=KRYLOV"})  // (NRitMax 20: the finest
+    for (int a : {2, 4, 8, 16, 32})                        // run needs 11 passes); a = 32 (589,824 points)
+      if ((!quick || a <= 4) && (a < 32 || std::string(solver) != "solver=LU"))  // not with LU (~20 min)
         scal2.cases.push_back(A({"collapse", "a=" + std::to_string(a), "mp=6", "NRitMax=20", solver}));
   all.push_back(scal2);
   Suite thr{"threads", {}, {"extent", "height", "error"}};
