@@ -9,7 +9,9 @@
 // The basis of a point (nIN, Svp, dSvp: its nn nodes) is kept in a basis arena
 // shared by the points (basisArena.h), read through views as the arrays of
 // the paper; roomForBasis gives the points their slices (elemMPinfo once per
-// load step; a point built by hand, e.g. in a test, one of its own). The
+// load step; a point built by hand, e.g. in a test, one of its own). A copy
+// of a point views the same slice (writing the copy's basis writes the
+// original's) until roomForBasis or elemMPinfo gives it its own. The
 // domain of a CPDI point (st0, st, xc) is kept on the heap for CPDI points
 // only (cpdi, empty for MPM and GIMP). So a GIMP point of the compaction
 // column costs 544 B and its 4-6 nodes 28 B each, not 1,088 B.
