@@ -1,7 +1,9 @@
 //--------------------------------------------------------------------------
 // elemMPinfo — cells, nodes, basis functions and gradients of every point
 //--------------------------------------------------------------------------
-// [AMPLE] sec 4. See elemMPinfo.h for inputs and outputs.
+// [AMPLE] sec 4. Three passes over the points: their cells and number of
+// nodes; a slice of the basis arena each (roomForBasis); the nodes, basis
+// values and gradients into it. See elemMPinfo.h for inputs and outputs.
 //--------------------------------------------------------------------------
 #include "elemMPinfo.h"
 #include "ample/basis/MPMbasis.h"
@@ -12,6 +14,7 @@
 #include "ample/basis/nodesForMP.h"
 #include "ample/solver/pointShares.h"
 #include <algorithm>
+#include <functional>
 
 namespace ample {
 
@@ -60,10 +63,8 @@ static RunError atPoint(size_t p, const RunError& e) {  // the error of point p
   return RunError("point " + std::to_string(p) + ": " + e.what(), e.kind);
 }
 
-// one point on the regular grid: its cells (elemForMP, or the corners' cells for
-// CPDI), their nodes, the basis functions and gradients at those nodes (MPMbasis),
-// null nodes dropped
-static void gridPointBasis(const Mesh& mesh, MaterialPoint& mp, size_t p, bool keepCells) {
+// one point's cells on the regular grid: elemForMP, or the cells of its corners for CPDI
+static void gridCells(const Mesh& mesh, MaterialPoint& mp, size_t p, bool keepCells) {
   try {
     if (keepCells && mp.ne == 1) {}               // FE mode: the point's own cell, no search
     else if (isCPDI(mp)) mp.ne = cellsOfCorners(mesh, mp, mp.eIN);
@@ -71,9 +72,6 @@ static void gridPointBasis(const Mesh& mesh, MaterialPoint& mp, size_t p, bool k
   } catch (const RunError& e) {
     throw atPoint(p, e);
   }
-  mp.nn = nodesForMP(mesh, mp.eIN, mp.ne, mp.nIN);
-  MPMbasis(mesh, mp);
-  dropNullNodes(mp);
 }
 
 // CPDI on a general mesh: the cells of the four corners (cornerCell: on an edge the
@@ -91,8 +89,8 @@ static int meshCellsOfCorners(const Mesh& mesh, const MaterialPoint& mp, std::ar
 }
 
 // the same on a general mesh (docs/meshes.md): the cell that holds the point
-// (meshElemForMP, or the corners' cells for CPDI), meshMPMbasis
-static void meshPointBasis(const Mesh& mesh, MaterialPoint& mp, size_t p, bool keepCells) {
+// (meshElemForMP), or the cells of its corners for CPDI
+static void meshCells(const Mesh& mesh, MaterialPoint& mp, size_t p, bool keepCells) {
   try {
     if (keepCells && mp.ne == 1) {}               // FE mode: the point's own cell, no search
     else if (isCPDI(mp)) mp.ne = meshCellsOfCorners(mesh, mp, mp.eIN);
@@ -100,22 +98,34 @@ static void meshPointBasis(const Mesh& mesh, MaterialPoint& mp, size_t p, bool k
   } catch (const RunError& e) {
     throw atPoint(p, e);
   }
-  mp.nn = nodesForMP(mesh, mp.eIN, mp.ne, mp.nIN);
-  meshMPMbasis(mesh, mp);
-  dropNullNodes(mp);
+}
+
+// work(p) for every point p, shared out over the threads of pointShares.h
+static void forEachPoint(int np, const std::function<void(int p)>& work) {
+  forPointShares(np, pointThreads(np), [&](int, int begin, int end) {
+    for (int p = begin; p < end; ++p) work(p);
+  });
 }
 
 void elemMPinfo(Mesh& mesh, std::vector<MaterialPoint>& mpData, bool keepCells) {
   const bool grid = mesh.regular();             // the one choice: the grid's path or a mesh's
   if (!grid) buildCellSearch(mesh);             // a setup may have moved the mesh's nodes
-  const auto pointBasis = grid ? gridPointBasis : meshPointBasis;
-  const int np = int(mpData.size()), nt = pointThreads(np);
-  if (nt == 1)
-    for (int p = 0; p < np; ++p) pointBasis(mesh, mpData[p], p, keepCells);
-  else                                          // the same on nt threads (AMPLE_OPENMP)
-    forPointShares(np, nt, [&](int, int begin, int end) {
-      for (int p = begin; p < end; ++p) pointBasis(mesh, mpData[p], p, keepCells);
-    });
+  const auto cellsOf = grid ? gridCells : meshCells;
+  const auto basisOf = grid ? MPMbasis : meshMPMbasis;
+  const int np = int(mpData.size());
+  std::vector<int> nn(np);                      // 1: each point's cells and how many nodes
+  forEachPoint(np, [&](int p) {
+    cellsOf(mesh, mpData[p], p, keepCells);
+    std::array<int, MAXN> nodes;
+    nn[p] = nodesForMP(mesh, mpData[p].eIN, mpData[p].ne, nodes.data());
+  });
+  roomForBasis(mpData, nn);                     // 2: a slice of the arena each, nn set
+  forEachPoint(np, [&](int p) {                 // 3: the nodes, S_vp and dS_vp into it
+    MaterialPoint& mp = mpData[p];
+    nodesForMP(mesh, mp.eIN, mp.ne, mp.nIN.data());
+    basisOf(mesh, mp);
+    dropNullNodes(mp);
+  });
   mesh.eInA.assign(mesh.nels(), 0);             // the active cells: those holding points
   for (const MaterialPoint& mp : mpData)
     for (int e = 0; e < mp.ne; ++e) mesh.eInA[mp.eIN[e]] = 1;

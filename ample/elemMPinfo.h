@@ -15,12 +15,19 @@
 // The regular grid and a general mesh each have their own path, chosen once
 // here: elemForMP and MPMbasis on the grid, meshElemForMP and meshMPMbasis on
 // a general mesh.
-// With OpenMP and at least 2048 points a thread (pointShares.h) the points are
-// shared out over the threads (each writes only its own points; the same
-// result as serially, bit for bit); the active cells are marked after.
-// Inputs:  mesh · mpData (mpC, lp, mpType; eIN, ne when keepCells) · keepCells
-// Outputs: mpData (eIN, ne, nIN, nn, Svp, dSvp) · mesh.eInA (nels)
-// Tests:   tests/test_basis.cpp (threaded: tests/test_detMPs.cpp)
+// The basis goes into the basis arena (basisArena.h), in three passes: each
+// point's cells and the number of their nodes; a slice of that many entries each,
+// in point order (roomForBasis: the arena of the last step is reused when only
+// these points hold it, so nothing is allocated per point); the nodes, S_vp and
+// dS_vp into the slices (a null node dropped leaves its entry unused, zero).
+// With OpenMP and at least 2048 points a thread (pointShares.h) the points of
+// passes one and three are shared out over the threads (each writes only its own
+// points and slices; the same result as serially, bit for bit); the active cells
+// are marked after.
+// Inputs:  mesh · mpData (mpC, lp, mpType, cpdi; eIN, ne when keepCells) · keepCells
+// Outputs: mpData (eIN, ne, nn; nIN, Svp, dSvp: views of the arena, basis) ·
+//          mesh.eInA (nels)
+// Tests:   tests/test_basis.cpp, tests/test_basisArena.cpp (threaded: tests/test_pointShares.cpp)
 //--------------------------------------------------------------------------
 #pragma once
 #include "mpData.h"

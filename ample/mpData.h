@@ -6,10 +6,24 @@
 // Indices are 0-based: node n owns the degrees of freedom 2n (x) and 2n+1 (y).
 // Stress and strain are 6-vectors in the order [xx yy zz xy yz zx]; strains
 // store engineering shear components (2 eps_xy, ...).
+// The basis of a point (nIN, Svp, dSvp: its nn nodes) is kept in a basis arena
+// shared by the points (basisArena.h), read through views as the arrays of
+// the paper; roomForBasis gives the points their slices (elemMPinfo once per
+// load step; a point built by hand, e.g. in a test, one of its own). A copy
+// of a point views the same slice (writing the copy's basis writes the
+// original's) until roomForBasis or elemMPinfo gives it its own. The
+// domain of a CPDI point (st0, st, xc) is kept on the heap for CPDI points
+// only (cpdi, empty for MPM and GIMP). So a GIMP point of the compaction
+// column costs 544 B and its 4-6 nodes 28 B each, not 1,088 B.
+// Inputs:  (types only) · roomForBasis: mpData, nodes per point
+// Outputs: MaterialPoint, CpdiDomain, Mesh, BC · roomForBasis: the points' views
+// Tests:   tests/test_basisArena.cpp
 //--------------------------------------------------------------------------
 #pragma once
+#include "basisArena.h"
 #include <Eigen/Dense>
 #include <array>
+#include <memory>
 #include <vector>
 
 namespace ample {
@@ -22,7 +36,7 @@ using Eigen::Vector3d;
 
 constexpr int nD = 2;        // spatial dimensions of the background grid
 constexpr int nen = 4;       // most nodes per cell (bi-linear quadrilateral; a triangle has 3)
-constexpr int MAXN = 16;     // most nodes one point may influence (4 x 4)
+constexpr int MAXN = 16;     // most nodes one point may influence (4 x 4): room of temporaries
 constexpr int MAXE = 9;      // most cells one point domain may overlap (3 x 3)
 
 enum class MpType { MPM = 1, GIMP = 2, CPDI1 = 3, CPDI2 = 4 };  // [AMPLE]: mpType (+ [CPDI])
@@ -38,33 +52,47 @@ enum class DomainUpdate {                   // GIMP domain updating, [Lagrangian
   None = 0, DetF = 1, Fii = 2, Uii = 3, Corner = 4, FiiVol = 5, FiiVolInc = 6
 };  //  -     eq 32     eq 33    eq 34    eqs 35-37   eq 38      eq 39
 
-struct MaterialPoint {
-  MpType mpType = MpType::GIMP;            // material point type
-  CmType cmType = CmType::Elastic;         // constitutive model type
-  Vector2d mpC = Vector2d::Zero();         // current coordinates x_p
-  Vector2d X0 = Vector2d::Zero();          // original coordinates X_p
-  double vp = 0, vp0 = 0;                  // current and original volume (eq 15)
-  double mpM = 0;                          // mass
-  int nn = 0;                              // number of nodes linked to the point
-  std::array<int, MAXN> nIN{};             // nodes linked to the point
-  int ne = 0;                              // number of cells linked to the point
-  std::array<int, MAXE> eIN{};             // cells linked to the point
-  std::array<double, MAXN> Svp{};          // basis functions S_vp
-  Eigen::Matrix<double, nD, MAXN> dSvp = Eigen::Matrix<double, nD, MAXN>::Zero();  // dS_vp/dX~
-  Matrix3d Fn = Matrix3d::Identity();      // deformation gradient at start of load step
-  Matrix3d F = Matrix3d::Identity();       // current deformation gradient (SS: stays I)
-  Vector6d sig = Vector6d::Zero();         // Cauchy stress
-  Vector6d epsEn = Vector6d::Zero();       // elastic log strain at start of load step (SS: small)
-  Vector6d epsE = Vector6d::Zero();        // current elastic log strain (SS: small strain)
-  Vector3d mCst = Vector3d::Zero();        // material constants [E, nu, rho_y]
-  Vector2d fp = Vector2d::Zero();          // point force carried by the point (total)
-  Vector2d u = Vector2d::Zero();           // total displacement
-  Vector2d lp = Vector2d::Zero();          // domain half lengths (0 for MPM)
-  Vector2d lp0 = Vector2d::Zero();         // original domain half lengths
+// [CPDI] sec 2: the domain of a CPDI point, a parallelogram (CPDI1) or a quadrilateral (CPDI2)
+struct CpdiDomain {
   Eigen::Matrix2d st0 = Eigen::Matrix2d::Zero();  // CPDI1: original domain vectors s, t (columns)
   Eigen::Matrix2d st = Eigen::Matrix2d::Zero();   // CPDI1: current domain vectors s = F s0, t = F t0
   Eigen::Matrix<double, nD, 4> xc = Eigen::Matrix<double, nD, 4>::Zero();  // CPDI2: domain corners
 };
+
+struct MaterialPoint {                     // members ordered so that they pack: 544 bytes
+  MpType mpType = MpType::GIMP;            // material point type
+  CmType cmType = CmType::Elastic;         // constitutive model type
+  double vp = 0, vp0 = 0;                  // current and original volume (eq 15)
+  double mpM = 0;                          // mass
+  Vector2d mpC = Vector2d::Zero();         // current coordinates x_p
+  Vector2d X0 = Vector2d::Zero();          // original coordinates X_p
+  int nn = 0;                              // number of nodes linked to the point
+  int ne = 0;                              // number of cells linked to the point
+  std::array<int, MAXE> eIN{};             // cells linked to the point
+  BasisView<int> nIN;                      // nodes linked to the point: nIN[v], v < nn
+  BasisView<double> Svp;                   // basis functions S_vp: Svp[v]
+  GradientView dSvp;                       // dS_vp/dX~ (2 x nn): dSvp(j, v), dSvp.col(v)
+  std::shared_ptr<BasisArena> basis;       // the arena of nIN, Svp, dSvp (roomForBasis)
+  Matrix3d Fn = Matrix3d::Identity();      // deformation gradient at start of load step
+  Matrix3d F = Matrix3d::Identity();       // current deformation gradient (SS: stays I)
+  Vector3d mCst = Vector3d::Zero();        // material constants [E, nu, rho_y]
+  Vector6d sig = Vector6d::Zero();         // Cauchy stress
+  Vector6d epsEn = Vector6d::Zero();       // elastic log strain at start of load step (SS: small)
+  Vector6d epsE = Vector6d::Zero();        // current elastic log strain (SS: small strain)
+  Vector2d fp = Vector2d::Zero();          // point force carried by the point (total)
+  Vector2d u = Vector2d::Zero();           // total displacement
+  Vector2d lp = Vector2d::Zero();          // domain half lengths (0 for MPM)
+  Vector2d lp0 = Vector2d::Zero();         // original domain half lengths
+  Indirect<CpdiDomain> cpdi;               // CPDI points only: st0, st, xc (MPM, GIMP: empty)
+};
+
+// the room of the basis: point p gets a slice of nn[p] nodes (zeroed) in one arena
+// and mp.nn = nn[p]. The arena the points hold is reused (its capacity kept) when
+// no one else holds it, else a new one is made: copies of the points elsewhere keep
+// theirs. elemMPinfo calls it once per load step; mpData's order is the arena's.
+void roomForBasis(std::vector<MaterialPoint>& mpData, const std::vector<int>& nn);
+// the same for one point built by hand (a test, an example): an arena of its own
+void roomForBasis(MaterialPoint& mp, int nn);
 
 inline bool isCPDI(const MaterialPoint& mp) {
   return mp.mpType == MpType::CPDI1 || mp.mpType == MpType::CPDI2;

@@ -9,7 +9,7 @@
 //   Fn = F, eps_e,n = eps_e          (converged state for the next step)
 // Inputs:  mesh · uvw (nDoF) converged displacement increment of the step ·
 //          method (GIMP domain update) · mpData
-// Outputs: mpData (mpC, u, vp, lp, st, xc, Fn, epsEn) updated
+// Outputs: mpData (mpC, u, vp, lp, cpdi->st, cpdi->xc, Fn, epsEn) updated
 // moveMesh (finite element mode, Analysis::fem): coord += uvw, so the mesh
 //   follows the body and every point keeps its cell and local coordinates
 //   (x_p = sum_v S_vp x_v before and after): updated Lagrangian FEM with the

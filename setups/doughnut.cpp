@@ -123,7 +123,7 @@ Analysis setupGrid(const Params& P) {
     if (type == MpType::CPDI2) {                                            // a corner on it
       for (size_t p = 0; p < an.mpData.size(); ++p)
         for (int c = 0; c < 4; ++c)
-          if ((an.mpData[p].xc.col(c) - x).norm() < 1e-9 * R && int(an.tagged.size()) == i)
+          if ((an.mpData[p].cpdi->xc.col(c) - x).norm() < 1e-9 * R && int(an.tagged.size()) == i)
             an.tagged.push_back(int(4 * p + c));
       continue;
     }
@@ -132,7 +132,7 @@ Analysis setupGrid(const Params& P) {
     pt.vp = pt.vp0 = 1e-6;
     pt.mpM = 0.0;
     pt.lp = pt.lp0 = Vector2d::Constant(type == MpType::MPM ? 0.0 : 5e-4);
-    pt.st0 = pt.st = 1e-3 * Eigen::Matrix2d::Identity();
+    if (pt.cpdi) pt.cpdi->st0 = pt.cpdi->st = 1e-3 * Eigen::Matrix2d::Identity();
     an.tagged.push_back(int(an.mpData.size()));
     an.mpData.push_back(pt);
   }
@@ -173,7 +173,7 @@ Results results(const Analysis& an, const Params& P) {
                               Eigen::Matrix2d::Identity()) * X0.row(0).transpose())
                   : Vector2d::Zero();
     else if (an.mpData.front().mpType == MpType::CPDI2)
-      u = an.mpData[k / 4].xc.col(k % 4) - X0.row(int(i) * nc).transpose();
+      u = an.mpData[k / 4].cpdi->xc.col(k % 4) - X0.row(int(i) * nc).transpose();
     else u = an.mpData[k].u;
     r.push_back({"ux_" + std::to_string(i), u(0)});
     r.push_back({"uy_" + std::to_string(i), u(1)});

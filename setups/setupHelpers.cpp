@@ -43,10 +43,14 @@ MaterialPoint blockPoint(const Vector2d& x, const Vector2d& lp0, const Params& P
   pt.X0 = pt.mpC;
   pt.lp0 = lp0;
   pt.vp0 = pt.vp = 4.0 * pt.lp0(0) * pt.lp0(1);
-  pt.st0 = pt.st = (2.0 * pt.lp0).asDiagonal();      // CPDI1 domain vectors s, t
-  for (int c = 0; c < 4; ++c)                         // rectangle corners (CPDI2)
-    pt.xc.col(c) = pt.mpC + Vector2d((c == 1 || c == 2) ? pt.lp0(0) : -pt.lp0(0),
-                                     (c >= 2) ? pt.lp0(1) : -pt.lp0(1));
+  if (isCPDI(pt)) {                                   // the domain of a CPDI point
+    CpdiDomain d;
+    d.st0 = d.st = (2.0 * pt.lp0).asDiagonal();       // CPDI1 domain vectors s, t
+    for (int c = 0; c < 4; ++c)                       // rectangle corners (CPDI2)
+      d.xc.col(c) = pt.mpC + Vector2d((c == 1 || c == 2) ? pt.lp0(0) : -pt.lp0(0),
+                                      (c >= 2) ? pt.lp0(1) : -pt.lp0(1));
+    pt.cpdi = d;
+  }
   if (pt.mpType == MpType::MPM) pt.lp0.setZero();  // standard MPM carries no domain
   pt.lp = pt.lp0;
   pt.mpM = rho * pt.vp0;
@@ -171,10 +175,10 @@ void fillCells(std::vector<MaterialPoint>& mpData, const Mesh& mesh, const Param
       xc.col(3) = quadMap(X, x0, y0 + 1, nullptr);
       MaterialPoint pt = cellPoint(quadMap(X, x0 + 0.5, y0 + 0.5, nullptr),
                                    0.5 * std::abs(cross2(xc.col(2) - xc.col(0), xc.col(3) - xc.col(1))), P, rho);
-      pt.xc = xc;
-      pt.st0.col(0) = 0.5 * (xc.col(1) - xc.col(0) + xc.col(2) - xc.col(3));
-      pt.st0.col(1) = 0.5 * (xc.col(3) - xc.col(0) + xc.col(2) - xc.col(1));
-      pt.st = pt.st0;
+      pt.cpdi->xc = xc;                           // type CPDI1 or CPDI2: cellPoint gave a domain
+      pt.cpdi->st0.col(0) = 0.5 * (xc.col(1) - xc.col(0) + xc.col(2) - xc.col(3));
+      pt.cpdi->st0.col(1) = 0.5 * (xc.col(3) - xc.col(0) + xc.col(2) - xc.col(1));
+      pt.cpdi->st = pt.cpdi->st0;
       mpData.push_back(pt);
     }
   }

@@ -4,7 +4,8 @@
 // [AMPLE] sec 5.2 (fig 11): points are placed mp x mp per cell of a block of
 // cells (detMpPos local positions mapped by shapefunc), cell by cell (x
 // fastest); each gets the domain half lengths h/(2 mp) (GIMP; 0 for MPM),
-// volume (h_x/mp)(h_y/mp) (unit thickness) and mass rho V.
+// volume (h_x/mp)(h_y/mp) (unit thickness) and mass rho V; a CPDI point its
+// rectangle as its domain (cpdi: s, t and the corners; none for MPM and GIMP).
 // fillPolygon ([Boundaries] sec 4, fig 4): the same points over the block, then
 // each point's square domain is clipped by the solid polygon (clipPolygon):
 // wholly outside (less than 1e-12 of it inside): removed; wholly inside (more

@@ -40,7 +40,7 @@ MaterialPoint pointOnAllNodes(const Mesh& mesh, MpType t, Vector2d x, Vector2d l
   mp.mpType = t;
   mp.mpC = x;
   mp.lp = (t == MpType::GIMP) ? l : Vector2d::Zero();
-  mp.nn = mesh.nodes();
+  roomForBasis(mp, mesh.nodes());
   for (int v = 0; v < mp.nn; ++v) mp.nIN[v] = v;
   return mp;
 }
@@ -336,7 +336,10 @@ TEST_SUITE("MPMbasis") {
     }
     const double e = 1e-6;  // and the gradients against central differences
     for (int i = 0; i < nD; ++i) {
-      MaterialPoint p = mp, m = mp;
+      MaterialPoint p = pointOnAllNodes(mesh, MpType::GIMP, mp.mpC, mp.lp);  // a basis of their own
+      MaterialPoint m = p;                                                  // (a copy shares it)
+      roomForBasis(m, mp.nn);
+      for (int v = 0; v < mp.nn; ++v) m.nIN[v] = p.nIN[v];
       p.mpC(i) += e;
       m.mpC(i) -= e;
       MPMbasis(mesh, p);
@@ -394,7 +397,7 @@ TEST_SUITE("MPMbasis") {
     MaterialPoint mp;
     mp.mpType = MpType::MPM;
     mp.mpC = Vector2d(0.62, 1.13);
-    mp.nn = 4;
+    roomForBasis(mp, 4);
     const int nodes[4] = {5, 6, 10, 9};
     for (int v = 0; v < 4; ++v) mp.nIN[v] = nodes[v];
     MPMbasis(mesh, mp);

@@ -366,16 +366,18 @@ TEST_SUITE("SvpCPDI2") {
     std::vector<MaterialPoint> mpData(2);
     MaterialPoint& p1 = mpData[0];  // CPDI1: general parallelogram
     p1.mpType = MpType::CPDI1;
+    p1.cpdi = CpdiDomain();
     p1.mpC = Vector2d(2.1, 1.5);
-    p1.st << 0.60, -0.25, 0.20, 0.70;
-    p1.st0 = p1.st;
+    p1.cpdi->st << 0.60, -0.25, 0.20, 0.70;
+    p1.cpdi->st0 = p1.cpdi->st;
     MaterialPoint& p2 = mpData[1];  // CPDI2: distorted quadrilateral
     p2.mpType = MpType::CPDI2;
-    p2.xc = distortedQuad();
-    p2.mpC = gaussAverages(p2.xc, Eigen::Vector4d::Zero()).centroid;
+    p2.cpdi = CpdiDomain();
+    p2.cpdi->xc = distortedQuad();
+    p2.mpC = gaussAverages(p2.cpdi->xc, Eigen::Vector4d::Zero()).centroid;
     elemMPinfo(mesh, mpData);
 
-    const Corners xs[2] = {parallelogram(p1.mpC, p1.st), p2.xc};
+    const Corners xs[2] = {parallelogram(p1.mpC, p1.cpdi->st), p2.cpdi->xc};
     for (int p = 0; p < 2; ++p) {
       const MaterialPoint& mp = mpData[p];
       CAPTURE(p);

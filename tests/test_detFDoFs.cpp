@@ -54,7 +54,7 @@ TEST_SUITE("detFDoFs") {
     const std::array<int, 4> nodes[3] = {{6, 7, 11, 12}, {7, 8, 12, 13}, {18, 19, 23, 24}};
     for (int p = 0; p < 3; ++p) {      // standard MPM points, each linked to one cell's nodes
       pts[p].mpType = MpType::MPM;
-      pts[p].nn = 4;
+      roomForBasis(pts[p], 4);
       for (int v = 0; v < 4; ++v) pts[p].nIN[v] = nodes[p][v];
     }
     mesh.bc = {{dof(7, 0), 0.0}, {dof(23, 1), 0.1}, {dof(0, 1), 0.0}};  // node 0 is not linked
@@ -97,13 +97,14 @@ TEST_SUITE("elemMPinfo") {
       std::vector<MaterialPoint> mpData(1);
       MaterialPoint& mp = mpData[0];
       mp.mpType = t;
-      mp.xc << 1.2, 2.1, 1.9, 1.0,   // x of the corners, anticlockwise from lower left
+      mp.cpdi = CpdiDomain();
+      mp.cpdi->xc << 1.2, 2.1, 1.9, 1.0,   // x of the corners, anticlockwise from lower left
                0.0, 0.0, 0.6, 0.6;   // y
       if (t == MpType::CPDI1) {      // a parallelogram with the same lower edge
-        mp.st << 0.9, -0.2, 0.0, 0.6;  // columns s, t
+        mp.cpdi->st << 0.9, -0.2, 0.0, 0.6;  // columns s, t
         mp.mpC = Vector2d(1.55, 0.3);
       } else {
-        mp.mpC = mp.xc.rowwise().mean();
+        mp.mpC = mp.cpdi->xc.rowwise().mean();
       }
       elemMPinfo(mesh, mpData);
       CHECK(mp.ne == 2);             // cells 1 and 2
@@ -137,9 +138,9 @@ TEST_SUITE("detFDoFs") {
         if ((an.mpData[p].mpC - Vector2d(2.75, 2.75)).norm() < 1e-12) top = p;
       MaterialPoint& mp = an.mpData[top];
       REQUIRE((mp.mpC - Vector2d(2.75, 2.75)).norm() < 1e-12);
-      mp.xc << 2.3, 3.0, 3.2, 2.5,
+      mp.cpdi->xc << 2.3, 3.0, 3.2, 2.5,
                2.2, 2.5, 3.3, 3.0;
-      mp.st << 0.7, 0.2,   // columns s = x1 - x0, t = x3 - x0; centre (2.75, 2.75)
+      mp.cpdi->st << 0.7, 0.2,   // columns s = x1 - x0, t = x3 - x0; centre (2.75, 2.75)
                0.3, 0.8;
       for (int n = 0; n < an.mesh.nodes(); ++n)
         if (std::abs(an.mesh.coord(n, 1) - 1.0) < 1e-12)
@@ -285,7 +286,7 @@ TEST_SUITE("detFDoFs") {
   MaterialPoint linkedTo(MpType t, std::vector<int> nodes) {
     MaterialPoint mp;
     mp.mpType = t;
-    mp.nn = int(nodes.size());
+    roomForBasis(mp, int(nodes.size()));  // nn and room for the nodes
     for (int v = 0; v < mp.nn; ++v) mp.nIN[v] = nodes[v];
     return mp;
   }

@@ -244,10 +244,10 @@ TEST_SUITE("detMPs") {
     mp.cmType = CmType::Elastic;
     mp.mCst = m;
     mp.vp = mp.vp0 = V;
-    mp.nn = 0;
+    roomForBasis(mp, int(bx.at.size() * by.at.size()));  // nn and room for the basis
     for (size_t b = 0; b < by.at.size(); ++b)
       for (size_t a = 0; a < bx.at.size(); ++a) {
-        const int v = mp.nn++;
+        const int v = int(b * bx.at.size() + a);
         mp.nIN[v] = 3 * by.at[b] + bx.at[a];
         mp.Svp[v] = bx.S[a] * by.S[b];
         mp.dSvp(0, v) = bx.dS[a] * by.S[b];

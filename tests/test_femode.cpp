@@ -72,7 +72,7 @@ TEST_SUITE("femode") {
       double V = 0, A = 0;
       for (const MaterialPoint& p : mps) {
         V += p.vp;
-        CHECK(std::abs(std::abs(cross(p.st0.col(0), p.st0.col(1))) - p.vp) <= 1e-14);  // CPDI1 |s x t|
+        CHECK(std::abs(std::abs(cross(p.cpdi->st0.col(0), p.cpdi->st0.col(1))) - p.vp) <= 1e-14);  // CPDI1 |s x t|
       }
       for (int e = 0; e < m.nels(); ++e)
         for (int a = 0; a < 4; ++a)

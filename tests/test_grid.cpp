@@ -23,7 +23,7 @@ std::vector<int> nodesOf(const Mesh& mesh, std::vector<int> cells) {
   std::array<int, MAXE> e;
   std::copy(cells.begin(), cells.end(), e.begin());
   std::array<int, MAXN> n;
-  const int nn = nodesForMP(mesh, e, int(cells.size()), n);
+  const int nn = nodesForMP(mesh, e, int(cells.size()), n.data());
   return std::vector<int>(n.begin(), n.begin() + nn);
 }
 }  // namespace

@@ -290,6 +290,8 @@ TEST_SUITE("cellBasis") {
     const Mesh g = formCoord2D(3, 2, 1.5, 1.0), q = asQuads(g);
     MaterialPoint pg, pq;
     pg.mpType = pq.mpType = MpType::MPM;
+    roomForBasis(pg, MAXN);                   // room for any nodesForMP
+    roomForBasis(pq, MAXN);
     std::mt19937 gen(7);
     std::uniform_real_distribution<double> r(0.0, 1.0);
     double dS = 0, dG = 0;
@@ -299,8 +301,8 @@ TEST_SUITE("cellBasis") {
       pq.ne = meshElemForMP(q, pq.mpC, pq.lp, pq.eIN);
       REQUIRE(pq.ne == 1);
       CHECK(pq.eIN[0] == pg.eIN[0]);
-      pg.nn = nodesForMP(g, pg.eIN, pg.ne, pg.nIN);
-      pq.nn = nodesForMP(q, pq.eIN, pq.ne, pq.nIN);
+      pg.nn = nodesForMP(g, pg.eIN, pg.ne, pg.nIN.data());
+      pq.nn = nodesForMP(q, pq.eIN, pq.ne, pq.nIN.data());
       MPMbasis(g, pg);
       meshMPMbasis(q, pq);
       for (int v = 0; v < 4; ++v) {
@@ -482,7 +484,8 @@ TEST_SUITE("meshRefusals") {
     RunLog log;
     CHECK_THROWS_WITH_AS(solve(an, log), doctest::Contains("mpType=2 (GIMP)"), InputError);
     MaterialPoint mp = an.mpData[0];
-    mp.ne = 1, mp.eIN[0] = findCell(an.mesh, mp.mpC), mp.nn = nodesForMP(an.mesh, mp.eIN, 1, mp.nIN);
+    roomForBasis(mp, MAXN);
+    mp.ne = 1, mp.eIN[0] = findCell(an.mesh, mp.mpC), mp.nn = nodesForMP(an.mesh, mp.eIN, 1, mp.nIN.data());
     CHECK_THROWS_AS(meshMPMbasis(an.mesh, mp), InputError);
   }
   TEST_CASE("meshRefusals: ghost penalty and implicit boundaries refuse a general mesh") {

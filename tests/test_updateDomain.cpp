@@ -231,18 +231,19 @@ TEST_SUITE("updateDomain") {
     Mesh mesh = formCoord2D(4, 4, 4.0, 4.0);
     MaterialPoint mp;
     mp.mpType = MpType::CPDI1;
+    mp.cpdi = CpdiDomain();
     mp.mpC = Vector2d(2.1, 1.7);
-    mp.st0 << 0.5, -0.2, 0.1, 0.4;
-    mp.st = mp.st0;
-    const double A0 = std::abs(mp.st0.determinant());
+    mp.cpdi->st0 << 0.5, -0.2, 0.1, 0.4;
+    mp.cpdi->st = mp.cpdi->st0;
+    const double A0 = std::abs(mp.cpdi->st0.determinant());
     for (const Mode& m : modes()) {
       CAPTURE(m.name);
       Eigen::Matrix2d F = m.F;
       F(1, 0) += 0.05;  // a general F on top of the mode
       mp.F = F3(F);
       updateDomain(mesh, Eigen::VectorXd::Zero(mesh.nDoF()), DomainUpdate::Uii, mp);
-      CHECK((mp.st - F * mp.st0).norm() <= tolOK);
-      const Vector2d s = mp.st.col(0), t = mp.st.col(1);
+      CHECK((mp.cpdi->st - F * mp.cpdi->st0).norm() <= tolOK);
+      const Vector2d s = mp.cpdi->st.col(0), t = mp.cpdi->st.col(1);
       CHECK(std::abs(std::abs(s(0) * t(1) - s(1) * t(0)) - F.determinant() * A0) <= tolOK);
       const Vector2d half = 0.5 * (s.cwiseAbs() + t.cwiseAbs());
       CHECK((mp.lp - half).norm() <= tolOK);
@@ -256,10 +257,11 @@ TEST_SUITE("updateDomain") {
       std::vector<MaterialPoint> mpData(1);
       MaterialPoint& mp = mpData[0];
       mp.mpType = MpType::CPDI2;
-      mp.xc << 2.30, 3.55, 3.40, 2.15,  // distorted quadrilateral, anticlockwise
+      mp.cpdi = CpdiDomain();
+      mp.cpdi->xc << 2.30, 3.55, 3.40, 2.15,  // distorted quadrilateral, anticlockwise
           2.00, 1.85, 3.10, 2.75;
-      mp.mpC = mp.xc.rowwise().mean();
-      const Corners x0 = mp.xc;
+      mp.mpC = mp.cpdi->xc.rowwise().mean();
+      const Corners x0 = mp.cpdi->xc;
       double A0 = 0;  // shoelace, written out here
       for (int c = 0; c < 4; ++c)
         A0 += 0.5 * (x0(0, c) * x0(1, (c + 1) % 4) - x0(0, (c + 1) % 4) * x0(1, c));
@@ -267,9 +269,9 @@ TEST_SUITE("updateDomain") {
       elemMPinfo(mesh, mpData);
       mp.F = F3(m.F);
       updateDomain(mesh, homogeneousUvw(mesh, m.F), DomainUpdate::Uii, mp);
-      CHECK((mp.xc - m.F * x0).norm() <= tolOK);
+      CHECK((mp.cpdi->xc - m.F * x0).norm() <= tolOK);
       CHECK(std::abs(mp.vp - m.F.determinant() * A0) <= tolOK);
-      const Vector2d half = 0.5 * (mp.xc.rowwise().maxCoeff() - mp.xc.rowwise().minCoeff());
+      const Vector2d half = 0.5 * (mp.cpdi->xc.rowwise().maxCoeff() - mp.cpdi->xc.rowwise().minCoeff());
       CHECK((mp.lp - half).norm() <= tolOK);
     }
   }

@@ -2,7 +2,7 @@
 # check_layers.sh — the includes of the project run one way (docs/structure.md)
 #
 # Layers, bottom to top; a file may include files of its own layer or below:
-#   0 data          ample/mpData.h ample/errors.h ample/analysis.h
+#   0 data          ample/mpData.h ample/mpData.cpp ample/basisArena.h ample/errors.h ample/analysis.h
 #                   ample/classroom/exercise.h ample/boundaries/boundary.h
 #   0 constitutive  constitutive/*  (Eigen, the standard library and ample/classroom/exercise.h only)
 #   1 pieces        ample/meshes/* ample/stiffness/* ample/solver/*
@@ -22,7 +22,7 @@ cd "$(dirname "$0")/.."
 
 layer() {  # layer of a project file, -1 for one outside the layered tree
   case "$1" in
-    ample/mpData.h|ample/errors.h|ample/analysis.h|ample/classroom/exercise.h|ample/boundaries/boundary.h|constitutive/*) echo 0 ;;
+    ample/mpData.h|ample/mpData.cpp|ample/basisArena.h|ample/errors.h|ample/analysis.h|ample/classroom/exercise.h|ample/boundaries/boundary.h|constitutive/*) echo 0 ;;
     ample/meshes/*|ample/stiffness/*|ample/solver/*) echo 1 ;;
     ample/basis/*|ample/boundaries/*|ample/remedies/*) echo 2 ;;
     ample/ample.h|ample/ample.cpp) echo 6 ;;

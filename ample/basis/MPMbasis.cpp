@@ -32,7 +32,7 @@ static CornerBasis gridCornerBasis(const Mesh& mesh, const MaterialPoint& mp, co
 static void cpdiBasis(MaterialPoint& mp, const Corners& x, const CornerBasis& S) {
   for (int v = 0; v < mp.nn; ++v) {
     const Eigen::Vector4d Sc = S.row(v).transpose();  // basis of node v at the four corners
-    const Basis2D b = (mp.mpType == MpType::CPDI1) ? SvpCPDI1(Sc, mp.st) : SvpCPDI2(Sc, x);
+    const Basis2D b = (mp.mpType == MpType::CPDI1) ? SvpCPDI1(Sc, mp.cpdi->st) : SvpCPDI2(Sc, x);
     mp.Svp[v] = b.S;
     mp.dSvp.col(v) = b.dS;
   }

@@ -13,8 +13,9 @@
 // one or the other. gridBasis: the grid node's bi-linear N_node(x). cornerBasis
 // (either mesh): the basis of each of the point's nodes at each domain corner,
 // S(v, c) = N_nIN[v](x_c) (SvpCPDI's Sc; the CPDI2 corner update; detFDoFs).
-// Inputs:  coord (nodes x 2) · mp.nIN, mp.nn, mp.mpC, mp.lp, mp.mpType · h (2)
-// Outputs: mp.Svp (nn) · mp.dSvp (2 x nn), gradients with respect to X~ (start of step)
+// Inputs:  coord (nodes x 2) · mp.nIN, mp.nn, mp.mpC, mp.lp, mp.mpType (CPDI: mp.cpdi) · h (2)
+// Outputs: mp.Svp (nn) · mp.dSvp (2 x nn), gradients with respect to X~ (start of step),
+//          into the point's slice of the basis arena (elemMPinfo; by hand: roomForBasis)
 // Tests:   tests/test_basis.cpp
 //--------------------------------------------------------------------------
 #pragma once

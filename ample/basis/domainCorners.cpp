@@ -14,8 +14,8 @@ Corners domainCorners(const MaterialPoint& mp) {
     switch (mp.mpType) {
       case MpType::MPM: x.col(c) = mp.mpC; break;
       case MpType::GIMP: x.col(c) = mp.mpC + Vector2d(a[c] * mp.lp(0), b[c] * mp.lp(1)); break;
-      case MpType::CPDI1: x.col(c) = mp.mpC + 0.5 * (a[c] * mp.st.col(0) + b[c] * mp.st.col(1)); break;
-      case MpType::CPDI2: x.col(c) = mp.xc.col(c); break;
+      case MpType::CPDI1: x.col(c) = mp.mpC + 0.5 * (a[c] * mp.cpdi->st.col(0) + b[c] * mp.cpdi->st.col(1)); break;
+      case MpType::CPDI2: x.col(c) = mp.cpdi->xc.col(c); break;
     }
   }
   return x;

@@ -1,9 +1,11 @@
 //--------------------------------------------------------------------------
 // nodesForMP — unique list of the nodes of the cells linked to a point
 //--------------------------------------------------------------------------
-// [AMPLE] table 1.
+// [AMPLE] table 1. nIN has room for the nodes: MAXN (a temporary), or the
+// point's slice of the basis arena once elemMPinfo knows how many (the same call
+// made before into a temporary: it returns nn).
 // Inputs:  etpl (nels x 4, or x 3 for triangles) · eIN (ne cells)
-// Outputs: nIN (nodes, ascending) · number of nodes nn
+// Outputs: nIN (nn nodes, ascending) · number of nodes nn
 // Tests:   tests/test_grid.cpp
 //--------------------------------------------------------------------------
 #pragma once
@@ -11,7 +13,6 @@
 
 namespace ample {
 
-int nodesForMP(const Mesh& mesh, const std::array<int, MAXE>& eIN, int ne,
-               std::array<int, MAXN>& nIN);
+int nodesForMP(const Mesh& mesh, const std::array<int, MAXE>& eIN, int ne, int* nIN);
 
 }  // namespace ample

@@ -33,10 +33,10 @@ void updateDomain(const Mesh& mesh, const Eigen::VectorXd& uvw, DomainUpdate met
   const double J = F.topLeftCorner<2, 2>().determinant();
   switch (mp.mpType) {
     case MpType::MPM: return;
-    case MpType::CPDI1: mp.st = F.topLeftCorner<2, 2>() * mp.st0; break;
+    case MpType::CPDI1: mp.cpdi->st = F.topLeftCorner<2, 2>() * mp.cpdi->st0; break;
     case MpType::CPDI2:
-      mp.xc = moveCorners(mesh, uvw, mp, mp.xc);
-      mp.vp = quadArea(mp.xc);
+      mp.cpdi->xc = moveCorners(mesh, uvw, mp, mp.cpdi->xc);
+      mp.vp = quadArea(mp.cpdi->xc);
       break;
     case MpType::GIMP: break;
   }

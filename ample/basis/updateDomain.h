@@ -16,8 +16,8 @@
 // Standard MPM points have no domain and are left alone.
 // Called before the point moves: corners are taken at the start of the step.
 // Inputs:  mesh · uvw (nDoF) · method · mp (mpC at the start of the step, F, Fn,
-//          lp, lp0, st0, xc, nIN)
-// Outputs: mp.lp, mp.st, mp.xc (and mp.vp for CPDI2)
+//          lp, lp0, nIN, Svp; CPDI: cpdi->st0, cpdi->xc)
+// Outputs: mp.lp; CPDI: mp.cpdi->st, mp.cpdi->xc (and mp.vp for CPDI2)
 // Tests:   tests/test_updateDomain.cpp
 //--------------------------------------------------------------------------
 #pragma once
