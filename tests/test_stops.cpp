@@ -5,6 +5,7 @@
 #include "ample/ample.h"
 #include "ample/errors.h"
 #include "ample/remedies/loadSteps.h"
+#include "setups/setupHelpers.h"
 #include "testProblems.h"
 #include <doctest/doctest.h>
 #include <cmath>
@@ -198,5 +199,19 @@ TEST_SUITE("stops") {
     CHECK(r.err.find("exceeds the beam's length L = 0.1 m") != std::string::npos);
     CHECK(r.err.find("E >= 7.14e+08") != std::string::npos);
     CHECK_FALSE(std::filesystem::exists(r.dir + "/summary.json"));
+  }
+
+  TEST_CASE("stops: more points than the memory holds is refused before any work, with the bytes a point needs") {
+    const size_t perPoint = sizeof(MaterialPoint) + 4 * (sizeof(int) + 3 * sizeof(double));  // 4 nodes' basis
+    CHECK_NOTHROW(checkPointMemory(1000));                           // 1000 points: well inside
+    try {
+      checkPointMemory(size_t(1) << 42);                               // 4.4e12 points: PBs
+      FAIL("no InputError");
+    } catch (const InputError& e) {
+      const std::string m = e.what();
+      CHECK(m.find(std::to_string(perPoint) + " bytes each") != std::string::npos);
+      CHECK(m.find("use fewer points") != std::string::npos);
+      CHECK(m.find("converged copy") == std::string::npos);
+    }
   }
 }
