@@ -82,11 +82,13 @@ static Eigen::VectorXd luSolve(FreeSystem& S, const Eigen::VectorXd& rhs) {
 // solver=KRYLOV (freeSystem.h): a pass after the first of a load step (NRit > 1) with a factor
 // held is solved by PCG (factor and Kff symmetric) or GMRES preconditioned with that factor,
 // from x = 0 to a backward error of 1e-14; one that reaches 1e-12 within krylovMaxIt
-// iterations is accepted. Otherwise (or at NRit == 1) Kff is factorised, LDLT when symmetric
-// and its solve is accepted, else SparseLU, solved directly, and the factor kept for the step
+// iterations is accepted. Otherwise (or at NRit == 1, or when the last Krylov solve with this
+// factor needed more than half of krylovMaxIt: the factor has drifted too far to pay) Kff is
+// factorised, LDLT when symmetric and its solve is accepted, else SparseLU, solved directly,
+// and the factor kept for the step
 static Eigen::VectorXd krylovSolve(FreeSystem& S, const Eigen::VectorXd& rhs, int NRit) {
   using Eigen::VectorXd;
-  if (NRit > 1 && S.factorHeld) {
+  if (NRit > 1 && S.factorHeld && 2 * S.krylovLastIterations <= S.krylovMaxIt) {
     VectorXd x = VectorXd::Zero(rhs.size());
     KrylovResult k;
     const Preconditioner byLDLT = [&S](const VectorXd& r) { return VectorXd(S.ldlt.solve(r)); };
@@ -95,9 +97,11 @@ static Eigen::VectorXd krylovSolve(FreeSystem& S, const Eigen::VectorXd& rhs, in
     else k = gmres(S.Kff, S.factorSymmetric ? byLDLT : byLU, rhs, x, S.krylovMaxIt, 1e-14);
     S.krylovSolves++;
     S.krylovIterations += k.iterations;
+    S.krylovLastIterations = k.iterations;
     if (x.allFinite() && k.backwardError <= 1e-12) return x;
   }
   S.factorHeld = false;
+  S.krylovLastIterations = 0;                           // a new factor: none yet
   VectorXd x;
   if (symmetric(S.Kff) && symmetricSolve(S.ldlt, S.Kff, rhs, x, S.factorisations)) {
     S.factorSymmetric = S.factorHeld = true;

@@ -4,7 +4,8 @@
 // test); an exact preconditioner converges in 1 iteration, a perturbed one in a few, a bad one
 // spends the iterations allowed; the backward error against its definition on a hand case;
 // linSolve's counters: one factorisation a load step, a refactorisation when Kt(fd,fd) changes
-// too much for the held factor.
+// too much for the held factor, and without a Krylov try after a solve that needed more than
+// half the iterations allowed.
 #include "ample/linSolve.h"
 #include "ample/solver/krylov.h"
 #include <doctest/doctest.h>
@@ -159,5 +160,37 @@ TEST_SUITE("krylov") {
     CHECK(S.factorisations == 1);
     CHECK(S.krylovSolves == 1);
     CHECK(S.krylovIterations >= 2);
+  }
+  TEST_CASE("krylov: after a Krylov solve that needed more than half the iterations allowed, the next pass refactorises") {
+    const int n = 200;
+    std::vector<int> fd(n);
+    for (int i = 0; i < n; ++i) fd[i] = i;
+    const VectorXd b = load(n);
+    FreeSystem S;
+    S.choice = LinearSolver::KRYLOV;
+    S.krylovMaxIt = 30;
+    linSolve({}, tridiagonal(n, 1e-4, 0.0), b, 1, fd, &S);       // the step's factor
+    const SpMat drifted = tridiagonal(n, 0.01, 0.0);
+    const LinSolveOut x = linSolve({}, drifted, b, 2, fd, &S);   // solved by PCG, slowly (20 iterations)
+    REQUIRE(S.krylovSolves == 1);
+    CHECK(S.krylovIterations > 15);                                // more than half of 30 ...
+    CHECK(S.krylovIterations <= 30);                               // ... and converged
+    CHECK(S.factorisations == 1);
+    const VectorXd ref = MatrixXd(drifted).partialPivLu().solve(b);
+    CHECK((x.duvw - ref).norm() <= 1e-10 * ref.norm());
+    linSolve({}, drifted, b, 3, fd, &S);                           // no Krylov try: factorised
+    CHECK(S.krylovSolves == 1);
+    CHECK(S.factorisations == 2);
+    linSolve({}, drifted, b, 4, fd, &S);                           // the new factor is exact: PCG again
+    CHECK(S.krylovSolves == 2);
+    CHECK(S.factorisations == 2);
+    FreeSystem T;                                                  // a small drift: 13 iterations
+    T.choice = LinearSolver::KRYLOV;
+    linSolve({}, tridiagonal(n, 1e-4, 0.0), b, 1, fd, &T);
+    linSolve({}, tridiagonal(n, 0.002, 0.0), b, 2, fd, &T);
+    REQUIRE(T.krylovIterations <= 15);
+    linSolve({}, tridiagonal(n, 0.002, 0.0), b, 3, fd, &T);       // tried by PCG again
+    CHECK(T.krylovSolves == 2);
+    CHECK(T.factorisations == 1);
   }
 }

@@ -26,7 +26,9 @@
 //               preconditioned with it, to a backward error of 1e-14; a pass
 //               whose Krylov solve needs more than krylovMaxIt iterations or
 //               misses 1e-12 refactorises and solves directly, and its factor
-//               preconditions the passes after it
+//               preconditions the passes after it; so does a pass after one
+//               whose Krylov solve needed more than krylovMaxIt / 2 (the factor
+//               has drifted: the next solve would cost about a factorisation)
 // A symmetric choice whose pass is not symmetric (or whose factorisation
 // fails, e.g. LL^T of an indefinite Kt, or whose solve has a backward error
 // above 1e-12: linSolve.cpp) falls back to SparseLU for that pass,
@@ -76,6 +78,7 @@ struct FreeSystem {
   bool factorHeld = false;                     // KRYLOV: ldlt or lu holds a factor of this step
   bool factorSymmetric = false;                // KRYLOV: that factor is ldlt's (Kff was symmetric)
   int krylovMaxIt = 30;                        // KRYLOV: iterations before it refactorises
+  int krylovLastIterations = 0;                // KRYLOV: of the last Krylov solve with this factor
   long factorisations = 0;                     // numeric factorisations (summary.json)
   long krylovSolves = 0, krylovIterations = 0; // KRYLOV: Krylov solves tried, iterations spent
 };
