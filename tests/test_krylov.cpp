@@ -34,6 +34,15 @@ VectorXd load(int n) {
   for (int i = 0; i < n; ++i) b(i) = std::cos(0.3 * i) + 0.1 * i;
   return b;
 }
+// every one of n dofs free; a FreeSystem for solver=KRYLOV
+std::vector<int> allFree(int n) {
+  std::vector<int> fd(n);
+  for (int i = 0; i < n; ++i) fd[i] = i;
+  return fd;
+}
+struct KrylovSystem : FreeSystem {
+  KrylovSystem() { choice = LinearSolver::KRYLOV; }
+};
 // M = (K of another shift)^-1 by a dense LU: exact when shift is K's own
 Preconditioner inverseOf(const SpMat& P) {
   const Eigen::PartialPivLU<MatrixXd> lu{MatrixXd(P)};
@@ -103,11 +112,9 @@ TEST_SUITE("krylov") {
   }
   TEST_CASE("krylov: linSolve with solver=KRYLOV factorises once a load step and solves later passes by PCG") {
     const int n = 30;
-    std::vector<int> fd(n);
-    for (int i = 0; i < n; ++i) fd[i] = i;
+    const std::vector<int> fd = allFree(n);
     const VectorXd b = load(n);
-    FreeSystem S;
-    S.choice = LinearSolver::KRYLOV;
+    KrylovSystem S;
     const LinSolveOut first = linSolve({}, tridiagonal(n, 0.01, 0.0), b, 1, fd, &S);
     CHECK(S.factorisations == 1);
     CHECK(S.krylovSolves == 0);
@@ -126,11 +133,9 @@ TEST_SUITE("krylov") {
   }
   TEST_CASE("krylov: linSolve with solver=KRYLOV refactorises when the held factor is too far off") {
     const int n = 200;
-    std::vector<int> fd(n);
-    for (int i = 0; i < n; ++i) fd[i] = i;
+    const std::vector<int> fd = allFree(n);
     const VectorXd b = load(n);
-    FreeSystem S;
-    S.choice = LinearSolver::KRYLOV;
+    KrylovSystem S;
     S.krylovMaxIt = 3;
     linSolve({}, tridiagonal(n, 1e-4, 0.0), b, 1, fd, &S);
     const SpMat far = tridiagonal(n, 1.0, 0.0);                   // a very different pass
@@ -146,11 +151,9 @@ TEST_SUITE("krylov") {
   }
   TEST_CASE("krylov: linSolve with solver=KRYLOV on an unsymmetric Kt uses SparseLU and GMRES") {
     const int n = 30;
-    std::vector<int> fd(n);
-    for (int i = 0; i < n; ++i) fd[i] = i;
+    const std::vector<int> fd = allFree(n);
     const VectorXd b = load(n);
-    FreeSystem S;
-    S.choice = LinearSolver::KRYLOV;
+    KrylovSystem S;
     linSolve({}, tridiagonal(n, 0.01, 0.3), b, 1, fd, &S);
     CHECK(!S.factorSymmetric);
     const SpMat K2 = tridiagonal(n, 0.012, 0.31);
@@ -163,11 +166,9 @@ TEST_SUITE("krylov") {
   }
   TEST_CASE("krylov: after a Krylov solve that needed more than half the iterations allowed, the next pass refactorises") {
     const int n = 200;
-    std::vector<int> fd(n);
-    for (int i = 0; i < n; ++i) fd[i] = i;
+    const std::vector<int> fd = allFree(n);
     const VectorXd b = load(n);
-    FreeSystem S;
-    S.choice = LinearSolver::KRYLOV;
+    KrylovSystem S;
     S.krylovMaxIt = 30;
     linSolve({}, tridiagonal(n, 1e-4, 0.0), b, 1, fd, &S);       // the step's factor
     const SpMat drifted = tridiagonal(n, 0.01, 0.0);
@@ -184,8 +185,7 @@ TEST_SUITE("krylov") {
     linSolve({}, drifted, b, 4, fd, &S);                           // the new factor is exact: PCG again
     CHECK(S.krylovSolves == 2);
     CHECK(S.factorisations == 2);
-    FreeSystem T;                                                  // a small drift: 13 iterations
-    T.choice = LinearSolver::KRYLOV;
+    KrylovSystem T;                                                // a small drift: 13 iterations
     linSolve({}, tridiagonal(n, 1e-4, 0.0), b, 1, fd, &T);
     linSolve({}, tridiagonal(n, 0.002, 0.0), b, 2, fd, &T);
     REQUIRE(T.krylovIterations <= 15);
