@@ -37,7 +37,12 @@ import textwrap
 if __name__ == "__main__" and "--animate" in sys.argv[1:]:   # the page needs no matplotlib
     import animate_run
     sys.exit(animate_run.main([a for a in sys.argv[1:] if a != "--animate"]))
-import matplotlib
+try:
+    import matplotlib
+except ImportError:
+    sys.exit(f"plot_run.py: matplotlib is not installed for {sys.executable} (Debian: apt-get install "
+             "python3-matplotlib, then run /usr/bin/python3 plotting/plot_run.py ...); "
+             "--animate writes the page without it")
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt
 from matplotlib.collections import LineCollection, PolyCollection
