@@ -82,7 +82,9 @@ static Eigen::VectorXd luSolve(FreeSystem& S, const Eigen::VectorXd& rhs) {
 // solver=KRYLOV (freeSystem.h): a pass after the first of a load step (NRit > 1) with a factor
 // held is solved by PCG (factor and Kff symmetric) or GMRES preconditioned with that factor,
 // from x = 0 to a backward error of 1e-14; one that reaches 1e-12 within krylovMaxIt
-// iterations is accepted. Otherwise (or at NRit == 1, or when the last Krylov solve with this
+// iterations and leaves a residual of at most 1e-3 of the right-hand side (the test linSolve
+// applies to every solve: where Kt(fd,fd) is nearly singular x is huge, and a backward error
+// of 1e-12 need not mean that) is accepted. Otherwise (or at NRit == 1, or when the last Krylov solve with this
 // factor needed more than half of krylovMaxIt: the factor has drifted too far to pay) Kff is
 // factorised, LDLT when symmetric and its solve is accepted, else SparseLU, solved directly,
 // and the factor kept for the step
@@ -98,7 +100,7 @@ static Eigen::VectorXd krylovSolve(FreeSystem& S, const Eigen::VectorXd& rhs, in
     S.krylovSolves++;
     S.krylovIterations += k.iterations;
     S.krylovLastIterations = k.iterations;
-    if (x.allFinite() && k.backwardError <= 1e-12) return x;
+    if (x.allFinite() && k.backwardError <= 1e-12 && (S.Kff * x - rhs).norm() <= 1e-3 * rhs.norm()) return x;
   }
   S.factorHeld = false;
   S.krylovLastIterations = 0;                           // a new factor: none yet

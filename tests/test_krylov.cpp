@@ -4,8 +4,9 @@
 // test); an exact preconditioner converges in 1 iteration, a perturbed one in a few, a bad one
 // spends the iterations allowed; the backward error against its definition on a hand case;
 // linSolve's counters: one factorisation a load step, a refactorisation when Kt(fd,fd) changes
-// too much for the held factor, and without a Krylov try after a solve that needed more than
-// half the iterations allowed.
+// too much for the held factor, without a Krylov try after a solve that needed more than
+// half the iterations allowed, and a direct solve where the Krylov one leaves a residual over
+// 1e-3 of the load (a nearly singular Kt).
 #include "ample/linSolve.h"
 #include "ample/solver/krylov.h"
 #include <doctest/doctest.h>
@@ -192,5 +193,19 @@ TEST_SUITE("krylov") {
     linSolve({}, tridiagonal(n, 0.002, 0.0), b, 3, fd, &T);       // tried by PCG again
     CHECK(T.krylovSolves == 2);
     CHECK(T.factorisations == 1);
+  }
+  TEST_CASE("krylov: a Krylov solve with a small backward error but a residual over 1e-3 of the load is solved directly") {
+    const int n = 30;                                             // K nearly singular: its lowest
+    const std::vector<int> fd = allFree(n);                       // eigenvalue 4e-13, so x is huge and
+    const VectorXd b = load(n);                                   // ||K x - b|| = 1e-14 ||K|| ||x|| is
+    KrylovSystem S;                                               // not small against ||b||
+    linSolve({}, tridiagonal(n, 0.01, 0.0), b, 1, fd, &S);
+    const double lowest = 2 - 2 * std::cos(M_PI / (n + 1));       // the 1D Laplacian's, analytic
+    const SpMat K = tridiagonal(n, -lowest + 4e-13, 0.0);
+    LinSolveOut x;
+    REQUIRE_NOTHROW(x = linSolve({}, K, b, 2, fd, &S));           // (Krylov's alone: "singular")
+    CHECK(S.krylovSolves == 1);                                   // tried, then refactorised
+    CHECK(S.factorisations == 2);
+    CHECK((K * x.duvw - b).norm() <= 1e-3 * b.norm());
   }
 }

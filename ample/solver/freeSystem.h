@@ -24,8 +24,9 @@
 //               when Kt(fd,fd) is symmetric, else SparseLU); the later passes
 //               of the step by PCG (symmetric) or restarted GMRES (krylov.h)
 //               preconditioned with it, to a backward error of 1e-14; a pass
-//               whose Krylov solve needs more than krylovMaxIt iterations or
-//               misses 1e-12 refactorises and solves directly, and its factor
+//               whose Krylov solve needs more than krylovMaxIt iterations,
+//               misses 1e-12, or leaves a residual over 1e-3 of the right-hand
+//               side (Kt nearly singular) refactorises and solves directly, and its factor
 //               preconditions the passes after it; so does a pass after one
 //               whose Krylov solve needed more than krylovMaxIt / 2 (the factor
 //               has drifted: the next solve would cost about a factorisation)
