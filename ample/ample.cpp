@@ -106,6 +106,7 @@ void solve(Analysis& an, RunLog& log, const RunOptions& opt) {
   LoadSteps loadSteps(an.lstps, an.substeps, opt.lastStep);          // lstp = 1 .. lstps
   FreeSystem Kff;                                                    // Kt(fd,fd), analysed once
   Kff.choice = an.solver;                                            // SparseLU, or LDLT if symmetric
+  Kff.nodeCoord = &mesh.coord;                                       // (LDLT_HALVES cuts by them)
   for (Increment inc; loadSteps.next(inc);) {                        // load steps
     const int lstp = inc.lstp;
     if (inc.first) startStep(an, lstp, log, opt.quiet);              // progress, setup's hook

@@ -38,7 +38,7 @@ static double backwardError(const SpMat& K, const Eigen::VectorXd& x, const Eige
   return backwardError(K, infNorm(K), x, b);
 }
 
-// a symmetric solver (LDLT, LDLT_METIS, CHOLMOD) factorises K (no pivoting) and solves;
+// a symmetric solver (LDLT, LDLT_METIS, CHOLMOD, LDLT_HALVES) factorises K (no pivoting) and solves;
 // false when it fails (an indefinite K for LL^T) or its backward error exceeds 1e-12
 // (a relative residual would refuse the ill-conditioned column of 2^14 cells: 1e-9..2e-8
 // there with a backward error of 1e-16)
@@ -56,6 +56,7 @@ static bool symmetricSolve(SymmetricSolver& s, const SpMat& K, const Eigen::Vect
 static bool chosenSymmetricSolve(FreeSystem& S, const Eigen::VectorXd& rhs, Eigen::VectorXd& x) {
   switch (S.choice) {
     case LinearSolver::LDLT: return symmetricSolve(S.ldlt, S.Kff, rhs, x, S.factorisations);
+    case LinearSolver::LDLT_HALVES: return symmetricSolve(S.halves, S.Kff, rhs, x, S.factorisations);
 #ifdef AMPLE_HAVE_METIS
     case LinearSolver::LDLT_METIS: return symmetricSolve(S.ldltMetis, S.Kff, rhs, x, S.factorisations);
 #endif
@@ -131,7 +132,7 @@ static Eigen::VectorXd factorisedSolve(FreeSystem& S, const Eigen::VectorXd& rhs
     return S.umfpack.solve(rhs);
   }
 #endif
-  if (S.choice != LinearSolver::LU) {                   // LDLT, LDLT_METIS, CHOLMOD
+  if (S.choice != LinearSolver::LU) {                   // LDLT, LDLT_METIS, CHOLMOD, LDLT_HALVES
     Eigen::VectorXd x;
     if (symmetric(S.Kff) && chosenSymmetricSolve(S, rhs, x)) return x;
     if (S.fallbacks++ == 0)

@@ -32,6 +32,15 @@ void extractFreeSystem(const SpMat& Kt, const std::vector<int>& fd, FreeSystem& 
   S.Kff.finalize();
 }
 
+// where the node of each free dof is (none without the nodes' coordinates)
+static std::vector<Eigen::Vector2d> dofPositions(const std::vector<int>& fd,
+                                                 const Eigen::Matrix<double, Eigen::Dynamic, nD, Eigen::RowMajor>* coord) {
+  std::vector<Eigen::Vector2d> at;
+  if (coord)
+    for (int d : fd) at.push_back(coord->row(d / nD).transpose());
+  return at;
+}
+
 void buildFreeSystem(const SpMat& Kt, const std::vector<int>& fd, FreeSystem& S) {
   checkSolverBuilt(S.choice);
   extractFreeSystem(Kt, fd, S);
@@ -41,6 +50,7 @@ void buildFreeSystem(const SpMat& Kt, const std::vector<int>& fd, FreeSystem& S)
     case LinearSolver::LU: break;
     case LinearSolver::LDLT:
     case LinearSolver::KRYLOV: S.ldlt.analyzePattern(S.Kff); break;
+    case LinearSolver::LDLT_HALVES: S.halves.analyzePattern(S.Kff, dofPositions(fd, S.nodeCoord)); break;
 #ifdef AMPLE_HAVE_METIS
     case LinearSolver::LDLT_METIS: S.ldltMetis.analyzePattern(S.Kff); break;
 #endif

@@ -30,6 +30,9 @@
 //               preconditions the passes after it; so does a pass after one
 //               whose Krylov solve needed more than krylovMaxIt / 2 (the factor
 //               has drifted: the next solve would cost about a factorisation)
+//   LDLT_HALVES LDL^T of two halves of the free dofs and the interface between
+//               them (halvesLDLT.h): the halves factorised on two threads at
+//               once; symmetric passes only, as LDLT
 // A symmetric choice whose pass is not symmetric (or whose factorisation
 // fails, e.g. LL^T of an indefinite Kt, or whose solve has a backward error
 // above 1e-12: linSolve.cpp) falls back to SparseLU for that pass,
@@ -42,6 +45,7 @@
 // Tests:   tests/test_linSolve.cpp
 //--------------------------------------------------------------------------
 #pragma once
+#include "halvesLDLT.h"
 #include "solverChoice.h"
 #include "stiffnessPattern.h"
 #include <Eigen/SparseCholesky>
@@ -68,6 +72,9 @@ struct FreeSystem {
   Eigen::SparseLU<SpMat, Eigen::COLAMDOrdering<int>> lu;  // LU, and the symmetric choices' fallback
   bool luAnalysed = false;                     // lu's analysis is of this pattern
   Eigen::SimplicialLDLT<SpMat> ldlt;           // LDLT (AMD ordering)
+  HalvesLDLT halves;                           // LDLT_HALVES
+  const Eigen::Matrix<double, Eigen::Dynamic, nD, Eigen::RowMajor>* nodeCoord = nullptr;  // LDLT_HALVES
+                                               // cuts the free dofs in two where their nodes are
 #ifdef AMPLE_HAVE_METIS
   Eigen::SimplicialLDLT<SpMat, Eigen::Lower, Eigen::MetisOrdering<int>> ldltMetis;  // LDLT_METIS
 #endif

@@ -9,7 +9,8 @@
 namespace ample {
 
 const std::vector<std::string>& solverNames() {
-  static const std::vector<std::string> names{"LU", "LDLT", "LDLT_METIS", "CHOLMOD", "UMFPACK", "KRYLOV"};
+  static const std::vector<std::string> names{"LU", "LDLT", "LDLT_METIS", "CHOLMOD", "UMFPACK", "KRYLOV",
+                                                "LDLT_HALVES"};
   return names;
 }
 

@@ -2,7 +2,7 @@
 // solverChoice — the names of solver= and the ones this build has
 //--------------------------------------------------------------------------
 // The sparse solvers of Kt(fd,fd) (freeSystem.h, docs/scaling.md "The sparse
-// solve"): LU, LDLT and KRYLOV in every build; LDLT_METIS with -DAMPLE_METIS=ON;
+// solve"): LU, LDLT, KRYLOV and LDLT_HALVES in every build; LDLT_METIS with -DAMPLE_METIS=ON;
 // CHOLMOD and UMFPACK with -DAMPLE_SUITESPARSE=ON (cmake/solverLibraries.cmake).
 // Inputs:  a LinearSolver (mpData.h)
 // Outputs: the names in the order of LinearSolver · the list this build has ·
@@ -17,7 +17,7 @@
 
 namespace ample {
 
-const std::vector<std::string>& solverNames();  // "LU", "LDLT", "LDLT_METIS", "CHOLMOD", "UMFPACK", "KRYLOV"
+const std::vector<std::string>& solverNames();  // "LU", "LDLT", "LDLT_METIS", "CHOLMOD", "UMFPACK", "KRYLOV", "LDLT_HALVES"
 bool solverBuilt(LinearSolver choice);          // LU, LDLT: always; the others with their option
 std::string solversBuilt();                     // e.g. "LU, LDLT"
 void checkSolverBuilt(LinearSolver choice);     // InputError when not built
