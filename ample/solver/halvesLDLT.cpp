@@ -106,6 +106,7 @@ static SpMat principal(const SpMat& K, const std::vector<int>& dofs, bool upper,
 }
 
 void HalvesLDLT::analyzePattern(const SpMat& K, const std::vector<Eigen::Vector2d>& at) {
+  eigen_assert(K.isCompressed() && K.rows() == K.cols());
   const std::array<std::vector<int>, 3> split = splitInTwo(K, at);
   interface_ = split[2];
   for (int i = 0; i < 2; ++i) {
@@ -172,6 +173,7 @@ void HalvesLDLT::factorize(const SpMat& K) {
 
 // y = L_i^-1 b through the interior columns: v (interior) becomes y, g (interface) gets -M_i y
 void HalvesLDLT::forward(const Half& h, Eigen::VectorXd& v, Eigen::VectorXd& g) const {
+  if (h.n == 0) return;                                 // (an empty half has no factor)
   const SpMat& L = h.ldlt.matrixL().nestedExpression();
   for (int j = 0; j < h.n; ++j)
     for (SpMat::InnerIterator it(L, j); it; ++it) {
@@ -183,6 +185,7 @@ void HalvesLDLT::forward(const Half& h, Eigen::VectorXd& v, Eigen::VectorXd& g) 
 
 // x = L_i^-T (D_i^-1 y - M_i^T x_s) through the interior columns, the interface's x_s known
 void HalvesLDLT::backward(const Half& h, Eigen::VectorXd& v, const Eigen::VectorXd& xs) const {
+  if (h.n == 0) return;
   const SpMat& L = h.ldlt.matrixL().nestedExpression();
   const Eigen::VectorXd& D = h.ldlt.vectorD();
   for (int j = h.n - 1; j >= 0; --j) {
