@@ -145,6 +145,25 @@ TEST_SUITE("linSolve") {
     CHECK(ldlt.fallbacks == 1);
     CHECK(ldlt.builds == 1);  // the same pattern: the analysis kept
   }
+  // an entry without a mirror across the diagonal (above or below it) makes Kff unsymmetric:
+  // SparseLU solves the pass at once, with no LDL^T factorisation tried first
+  TEST_CASE("linSolve: solver=LDLT: an entry with no mirror across the diagonal, above or below, goes to SparseLU without an LDL^T try") {
+    Eigen::VectorXd oobf(5);
+    oobf << 0.7, 0.5, -1.0, 0.25, 2.0;
+    for (bool above : {true, false}) {
+      CAPTURE(above);
+      SpMat K = chain();
+      K.coeffRef(above ? 1 : 3, above ? 3 : 1) = 0.3;  // (1, 3) or (3, 1) alone
+      K.makeCompressed();                               // (as detMPs gives Kt)
+      FreeSystem ldlt;
+      ldlt.choice = LinearSolver::LDLT;
+      const LinSolveOut c = linSolve({{0, 0.1}}, K, oobf, 1, {1, 2, 3, 4}, &ldlt);
+      const Eigen::VectorXd r = K * c.duvw - oobf;
+      for (int d = 1; d < 5; ++d) CHECK(std::abs(r(d)) <= 1e-13);
+      CHECK(ldlt.fallbacks == 1);
+      CHECK(ldlt.factorisations == 1);                  // SparseLU's only
+    }
+  }
   // the old rule (same number of entries) would have kept the analysis of another pattern
   TEST_CASE("linSolve: the cache keeps its analysis while the pattern is the same, and rebuilds for another pattern with as many entries") {
     FreeSystem S;

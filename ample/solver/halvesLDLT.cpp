@@ -105,11 +105,21 @@ static SpMat principal(const SpMat& K, const std::vector<int>& dofs, bool upper,
   return A;
 }
 
+// the halves on two threads where there are two (the same arithmetic either way)
+static int halvesThreads() {
+#ifdef _OPENMP
+  return std::min(2, omp_get_max_threads());
+#else
+  return 1;
+#endif
+}
+
 void HalvesLDLT::analyzePattern(const SpMat& K, const std::vector<Eigen::Vector2d>& at) {
   eigen_assert(K.isCompressed() && K.rows() == K.cols());
   const std::array<std::vector<int>, 3> split = splitInTwo(K, at);
   interface_ = split[2];
-  for (int i = 0; i < 2; ++i) {
+#pragma omp parallel for num_threads(halvesThreads()) schedule(static, 1)
+  for (int i = 0; i < 2; ++i) {                         // each half on its own thread
     Half& h = half_[i];
     h.n = int(split[i].size());
     std::vector<int> unused;
@@ -144,15 +154,6 @@ void HalvesLDLT::factorizeHalf(Half& h) {
       if (it.row() > c) Lss(it.row() - h.n, c - h.n) = it.value();
   const Eigen::MatrixXd DLt = h.ldlt.vectorD().tail(s).asDiagonal() * Lss.transpose();
   h.T.noalias() = Lss.triangularView<Eigen::UnitLower>() * DLt;
-}
-
-// the halves on two threads where there are two (the same arithmetic either way)
-static int halvesThreads() {
-#ifdef _OPENMP
-  return std::min(2, omp_get_max_threads());
-#else
-  return 1;
-#endif
 }
 
 void HalvesLDLT::factorize(const SpMat& K) {

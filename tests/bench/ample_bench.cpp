@@ -9,11 +9,12 @@
 //   scaling     run time and memory against points: compaction to 2^20 points, with
 //               solver=LU (the default), solver=LDLT and solver=KRYLOV
 //   scaling2d   the same for the collapse refined to 147,456 points (a = 2..16, 6x6
-//               points per cell), with solver=LU (the default), LDLT and KRYLOV, and to
-//               589,824 points (a = 32) with LDLT and KRYLOV; both suites report the
+//               points per cell), with solver=LU (the default), LDLT, KRYLOV and LDLT_HALVES,
+//               and to 589,824 points (a = 32) with all but LU; both suites report the
 //               factorisations, Krylov solves and iterations of each run
 //   threads     the point loop on 1 and 2 OpenMP threads (AMPLE_OPENMP): collapse a = 8,
-//               16 (solver=LDLT), compaction 2^16 cells
+//               16 (solver=LDLT, and LDLT_HALVES, whose halves share the threads too),
+//               compaction 2^16 cells
 //   beam        tip displacement for a = 1, 2, 4 (6x6) and mp = 2, 3, 4 (a = 2),
 //               with the load-displacement history of each run
 //   collapse    extent and height, [AMPLE] table 5 and [Lagrangian] table 6
@@ -168,7 +169,7 @@ std::vector<Suite> suites(bool quick) {
   all.push_back(scal);
   Suite scal2{"scaling2d", {}, {"extent", "height"}};  // the collapse refined: the solver shows
   scal2.extra.insert(scal2.extra.end(), solves.begin(), solves.end());
-  for (const char* solver : {"solver=LU", "solver=LDLT", "solver=KRYLOV"})  // (NRitMax 20: the finest
+  for (const char* solver : {"solver=LU", "solver=LDLT", "solver=KRYLOV", "solver=LDLT_HALVES"})  // (NRitMax 20: the finest
     for (int a : {2, 4, 8, 16, 32})                        // run needs 11 passes); a = 32 (589,824 points)
       if ((!quick || a <= 4) && (a < 32 || std::string(solver) != "solver=LU")) {  // not with LU (~20 min)
         Args c = A({"collapse", "a=" + std::to_string(a), "mp=6", "NRitMax=20", solver});
@@ -178,8 +179,10 @@ std::vector<Suite> suites(bool quick) {
   all.push_back(scal2);
   Suite thr{"threads", {}, {"extent", "height", "error"}};
   for (const char* t : {"threads=1", "threads=2"}) {
-    thr.cases.push_back(A({"collapse", "a=8", "mp=6", "solver=LDLT", t}));
-    if (!quick) thr.cases.push_back(A({"collapse", "a=16", "mp=6", "NRitMax=20", "solver=LDLT", t}));
+    for (const char* solver : {"solver=LDLT", "solver=LDLT_HALVES"}) {  // the halves: two threads solve too
+      thr.cases.push_back(A({"collapse", "a=8", "mp=6", solver, t}));
+      if (!quick) thr.cases.push_back(A({"collapse", "a=16", "mp=6", "NRitMax=20", solver, t}));
+    }
     thr.cases.push_back(A({"compaction", quick ? "nelsy=8192" : "nelsy=65536", "tol=1e-8", t}));
   }
   all.push_back(thr);
