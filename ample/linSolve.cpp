@@ -24,7 +24,9 @@ static bool symmetric(const SpMat& K, bool allEntries = false) {
   const int *outer = K.outerIndexPtr(), *inner = K.innerIndexPtr();
   const double* val = K.valuePtr();
   long above = 0, mirrored = 0, unequal = 0;
+#ifdef _OPENMP
 #pragma omp parallel for reduction(+ : above, mirrored, unequal) schedule(static)
+#endif
   for (int c = 0; c < K.outerSize(); ++c)
     for (int e = outer[c]; e < outer[c + 1]; ++e) {
       const int r = inner[e];

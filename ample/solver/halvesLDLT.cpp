@@ -105,20 +105,20 @@ static SpMat principal(const SpMat& K, const std::vector<int>& dofs, bool upper,
   return A;
 }
 
-// the halves on two threads where there are two (the same arithmetic either way)
-static int halvesThreads() {
+// the loops over the two halves: on two threads where there are two (the same arithmetic
+// either way); without OpenMP one after the other
 #ifdef _OPENMP
-  return std::min(2, omp_get_max_threads());
+static int halvesThreads() { return std::min(2, omp_get_max_threads()); }
+#define EACH_HALF_ON_ITS_THREAD _Pragma("omp parallel for num_threads(halvesThreads()) schedule(static, 1)")
 #else
-  return 1;
+#define EACH_HALF_ON_ITS_THREAD
 #endif
-}
 
 void HalvesLDLT::analyzePattern(const SpMat& K, const std::vector<Eigen::Vector2d>& at) {
   eigen_assert(K.isCompressed() && K.rows() == K.cols());
   const std::array<std::vector<int>, 3> split = splitInTwo(K, at);
   interface_ = split[2];
-#pragma omp parallel for num_threads(halvesThreads()) schedule(static, 1)
+EACH_HALF_ON_ITS_THREAD
   for (int i = 0; i < 2; ++i) {                         // each half on its own thread
     Half& h = half_[i];
     h.n = int(split[i].size());
@@ -159,7 +159,7 @@ void HalvesLDLT::factorizeHalf(Half& h) {
 void HalvesLDLT::factorize(const SpMat& K) {
   for (Half& h : half_)
     for (size_t e = 0; e < h.fromK.size(); ++e) h.K.valuePtr()[e] = K.valuePtr()[h.fromK[e]];
-#pragma omp parallel for num_threads(halvesThreads()) schedule(static, 1)
+EACH_HALF_ON_ITS_THREAD
   for (int i = 0; i < 2; ++i) factorizeHalf(half_[i]);
   info_ = Eigen::Success;
   for (const Half& h : half_)
@@ -201,7 +201,7 @@ Eigen::VectorXd HalvesLDLT::solve(const Eigen::VectorXd& b) const {
   const int s = int(interface_.size());
   std::array<Eigen::VectorXd, 2> v, g;
   Eigen::VectorXd x(b.size()), xs(s);
-#pragma omp parallel for num_threads(halvesThreads()) schedule(static, 1)
+EACH_HALF_ON_ITS_THREAD
   for (int i = 0; i < 2; ++i) {
     v[i].resize(half_[i].n);
     for (int k = 0; k < half_[i].n; ++k) v[i](k) = b(half_[i].dofs[k]);
@@ -210,7 +210,7 @@ Eigen::VectorXd HalvesLDLT::solve(const Eigen::VectorXd& b) const {
   }
   for (int k = 0; k < s; ++k) xs(k) = b(interface_[k]) + g[0](k) + g[1](k);
   if (s > 0) xs = S_.solve(xs);
-#pragma omp parallel for num_threads(halvesThreads()) schedule(static, 1)
+EACH_HALF_ON_ITS_THREAD
   for (int i = 0; i < 2; ++i) {
     backward(half_[i], v[i], xs);
     for (int k = 0; k < half_[i].n; ++k) x(half_[i].dofs[k]) = v[i](k);
