@@ -146,7 +146,7 @@ void HalvesLDLT::factorizeHalf(Half& h) {
   h.T.setZero(s, s);
   if (h.dofs.empty()) return;
   h.ldlt.factorize(h.K);
-  if (h.ldlt.info() != Eigen::Success) return;
+  if (h.ldlt.info() != Eigen::Success || s == 0) return;  // (no interface: T_i is empty)
   const SpMat& L = h.ldlt.matrixL().nestedExpression();
   Eigen::MatrixXd Lss = Eigen::MatrixXd::Identity(s, s);
   for (int c = h.n; c < h.n + s; ++c)
