@@ -177,8 +177,11 @@ void prefetchAhead(const std::vector<MaterialPoint>& mpData, int p, int end) {
 
 // exp(2 eps_e,n) of every point (eq 9): it does not change within a load step
 std::vector<Matrix3d> elasticLeftCG(const std::vector<MaterialPoint>& mpData) {
-  std::vector<Matrix3d> bEn(mpData.size());
-  for (size_t p = 0; p < mpData.size(); ++p) bEn[p] = symExp(2.0 * strainToTensor(mpData[p].epsEn));
+  const int np = int(mpData.size());
+  std::vector<Matrix3d> bEn(np);
+  forPointShares(np, pointThreads(np), [&](int, int begin, int end) {  // each point its own
+    for (int p = begin; p < end; ++p) bEn[p] = symExp(2.0 * strainToTensor(mpData[p].epsEn));
+  });
   return bEn;
 }
 
@@ -220,11 +223,13 @@ void detMPs(const Eigen::VectorXd& uvw, std::vector<MaterialPoint>& mpData, Form
       addPoint(uvw, out.bEn.empty() ? none : out.bEn[p], form, mpData[p], out.Kt, out.blocked, fint, Kval);
     }
   });
-  for (const DetMPsOut::Part& part : out.part) {
-    out.fint += part.fint;
-    Eigen::Map<Eigen::VectorXd>(out.Kt.valuePtr(), out.Kt.nonZeros()) +=
-        Eigen::Map<const Eigen::VectorXd>(part.Kval.data(), part.Kval.size());
-  }
+  for (const DetMPsOut::Part& part : out.part) out.fint += part.fint;
+  const int nnz = int(out.Kt.nonZeros());                       // Kt's values: each thread a range
+  forPointShares(nnz, nt, [&](int, int begin, int end) {        // of entries, the shares in order
+    Eigen::Map<Eigen::VectorXd> Kval(out.Kt.valuePtr() + begin, end - begin);
+    for (const DetMPsOut::Part& part : out.part)
+      Kval += Eigen::Map<const Eigen::VectorXd>(part.Kval.data() + begin, end - begin);
+  });
 }
 
 DetMPsOut detMPs(const Eigen::VectorXd& uvw, std::vector<MaterialPoint>& mpData, Formulation form) {
