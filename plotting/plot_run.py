@@ -40,6 +40,11 @@ if __name__ == "__main__" and "--animate" in sys.argv[1:]:   # the page needs no
 try:
     import matplotlib
 except ImportError:
+    system = "/usr/bin/python3"                               # Debian's, where python3-matplotlib goes
+    if (__name__ == "__main__" and os.path.exists(system) and os.path.realpath(sys.executable) !=
+            os.path.realpath(system) and not os.environ.get("AMPLE_PLOT_SYSTEM_PYTHON")):
+        os.environ["AMPLE_PLOT_SYSTEM_PYTHON"] = "1"          # once: no loop if it lacks it too
+        os.execv(system, [system, os.path.abspath(__file__)] + sys.argv[1:])
     sys.exit(f"plot_run.py: matplotlib is not installed for {sys.executable} (Debian: apt-get install "
              "python3-matplotlib, then run /usr/bin/python3 plotting/plot_run.py ...); "
              "--animate writes the page without it")
