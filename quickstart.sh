@@ -1,12 +1,14 @@
 #!/usr/bin/env bash
 # quickstart.sh — build ample-cpp (Release) and run the default setup (compaction).
-# Installs the Debian packages it needs (cmake, g++, libeigen3-dev, doctest-dev) if missing.
+# Installs the Debian packages it needs (cmake, g++, libeigen3-dev, doctest-dev) and the one the
+# README's next line needs (python3-matplotlib: plotting/plot_run.py draws the picture of a run
+# with it, under /usr/bin/python3 when the python3 on PATH has no matplotlib) if missing.
 # Builds the program only (build/release/ample, the build preset "release", -j2): about 1-2 min
 # on 2 idle cores, make's [ NN%] lines show the progress; the tests are built by
 # `cmake --workflow --preset quick` (README, "Test").
 set -euo pipefail
 cd "$(dirname "$0")"
-pkgs="cmake g++ libeigen3-dev doctest-dev"
+pkgs="cmake g++ libeigen3-dev doctest-dev python3-matplotlib"
 if ! dpkg -s $pkgs >/dev/null 2>&1; then
   sudo=""; [ "$(id -u)" -ne 0 ] && sudo="sudo"
   echo "quickstart: installing $pkgs"
