@@ -1,7 +1,8 @@
 """run_output.py — read what one run of ample writes to its output folder.
 
 Used by plot_run.py, plot_points.py and plot_history.py (no plotting here).
-  read_csv(path)            rows of a CSV file as dicts of floats (steps, residuals, history, mp_final)
+  read_csv(path)            rows of a CSV file as dicts of floats (steps, residuals, history, mp_final;
+                            an empty field, a number that is not finite: NaN)
   read_summary(outdir)      summary.json as a dict
   read_legacy_vtk(path)     everything of a legacy VTK file of ample, ASCII or BINARY: points
                             (x, y), cells (lists of node numbers), point data (name: values)
@@ -17,8 +18,10 @@ import struct
 
 
 def read_csv(path):
+    """every field a float; an empty one (ample's number that is not finite, e.g. the
+    residual of a pass that went NaN) is NaN"""
     with open(path) as f:
-        return [{k: float(v) for k, v in r.items()} for r in csv.DictReader(f)]
+        return [{k: float(v) if v != "" else math.nan for k, v in r.items()} for r in csv.DictReader(f)]
 
 
 def read_summary(outdir):

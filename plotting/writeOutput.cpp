@@ -46,9 +46,9 @@ void prepareOutput(const std::string& outDir) {
   }
 }
 
-// a residual that went NaN or Inf is written as the status not_finite, never as nan
+// a residual that went NaN or Inf is an empty field (CSV's missing number), never nan or a word
 static std::string residualText(double fErr) {
-  if (!std::isfinite(fErr)) return "not_finite";
+  if (!std::isfinite(fErr)) return "";
   std::ostringstream s;
   s.precision(17);
   s << fErr;

@@ -7,9 +7,11 @@
 // writeOutput writes, each to a temporary name then renamed:
 //   steps.csv      lstp, load_factor, NRit, fErr, converged, seconds
 //   residuals.csv  lstp, NRit, fErr (every Newton-Raphson pass)
+//                  (every field a number: a residual that is not finite is an empty field)
 //   mp_final.csv   X0, Y0, x, y, V0, V, sxx, syy, szz, sxy, syz, szx, lpx, lpy
 //                  (one row per point, state of the last converged step)
-//   history.csv    the setup's per-step figures, if it records any (afterStep)
+//   history.csv    the setup's per-step figures, if it records any (afterStep;
+//                  one that is not finite: an empty field)
 //   summary.json   setup, parameters, sizes, iterations, convergence, wall
 //                  seconds in total and per function, the setup's results
 // Inputs:  setup · P · an (final state) · log · outDir · quiet

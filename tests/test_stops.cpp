@@ -8,12 +8,14 @@
 #include "setups/setupHelpers.h"
 #include "testProblems.h"
 #include <doctest/doctest.h>
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <regex>
 #include <string>
+#include <vector>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -50,6 +52,53 @@ std::string advised(const std::string& message, const std::string& key) {
 // a token no JSON parser reads, or a NaN/Inf written by a C++ stream
 bool hasNonFinite(const std::string& text) {
   return std::regex_search(text, std::regex("(^|[^A-Za-z_])-?(nan|inf|NaN|Inf|Infinity)([^A-Za-z_]|$)"));
+}
+// the fields of one CSV line, empty ones kept (a last empty field too: "1,2," is 3 fields)
+std::vector<std::string> csvFields(const std::string& line) {
+  std::vector<std::string> f(1);
+  for (const char c : line) {
+    if (c == ',') f.emplace_back();
+    else f.back() += c;
+  }
+  return f;
+}
+// the whole field one finite decimal number, as a strict reader takes it: no word ("nan",
+// "inf", "not_finite"), no space, no hex (which strtod alone would read), nothing after it
+bool isNumber(const std::string& f) {
+  if (f.empty() || f.find_first_not_of("0123456789+-.eE") != std::string::npos) return false;
+  char* end = nullptr;
+  const double v = std::strtod(f.c_str(), &end);
+  return end == f.c_str() + f.size() && std::isfinite(v);
+}
+// the fields of the CSV files in dir that are not numbers, as "file row column: 'field'"
+// (empty where allowed: the fErr of a pass that went NaN, a setup's history figure that is
+// not finite); checked: how many files and how many empty fields there were
+struct CsvCheck {
+  std::vector<std::string> bad;
+  int files = 0, empty = 0;
+};
+CsvCheck checkCsvFields(const std::string& dir) {
+  CsvCheck c;
+  for (const auto& e : std::filesystem::directory_iterator(dir)) {
+    if (e.path().extension() != ".csv") continue;
+    const std::string file = e.path().filename().string();
+    c.files++;
+    std::ifstream in(e.path());
+    std::string line;
+    std::getline(in, line);                               // the header: the columns' names
+    const std::vector<std::string> names = csvFields(line);
+    for (int row = 1; std::getline(in, line); ++row) {
+      const std::vector<std::string> f = csvFields(line);
+      if (f.size() != names.size()) c.bad.push_back(file + " row " + std::to_string(row) + ": " +
+                                                    std::to_string(f.size()) + " fields");
+      for (size_t k = 0; k < std::min(f.size(), names.size()); ++k) {
+        const bool mayBeEmpty = file == "history.csv" || names[k] == "fErr";
+        if (f[k].empty() && mayBeEmpty) c.empty++;
+        else if (!isNumber(f[k])) c.bad.push_back(file + " row " + std::to_string(row) + " " + names[k] + ": '" + f[k] + "'");
+      }
+    }
+  }
+  return c;
 }
 }  // namespace
 
@@ -99,18 +148,42 @@ TEST_SUITE("stops") {
     }
   }
 
-  TEST_CASE("stops: a non-finite residual is written as the status not_finite") {
+  TEST_CASE("stops: a non-finite residual is written as an empty fErr field") {
     const Run r = runProgram("compaction nelsy=64 lstps=1", "notfinite");
     REQUIRE(r.code == 1);
     CHECK(r.err.find("the residual is not finite") != std::string::npos);
     const std::string res = testing::fileText(r.dir + "/residuals.csv");
-    CHECK(res.find(",not_finite\n") != std::string::npos);
+    CHECK(res.find("\n1,3,\n") != std::string::npos);   // step 1, pass 3: fErr empty
+    CHECK(testing::fileText(r.dir + "/steps.csv").find("\n1,1,3,,0,") != std::string::npos);
     CHECK_FALSE(hasNonFinite(res));
     CHECK_FALSE(hasNonFinite(testing::fileText(r.dir + "/steps.csv")));
     // what to try: halves of the failed step, or twice the load steps; each completes the run
     CHECK(advised(r.err, "substeps") == "4");
     CHECK(advised(r.err, "lstps") == "2");
     CHECK(runProgram("compaction nelsy=64 lstps=1 substeps=4", "notfinite_sub").code == 0);
+  }
+
+  // No column is text by design: writeOutput.cpp writes numbers only (converged as 0 or 1) and
+  // history.csv the setups' figures (Analysis::history: name and double). Empty is allowed in
+  // the fErr columns and in history.csv, where a number is not finite (docs/output.md).
+  TEST_CASE("stops: every field of every CSV of a stopped run is a finite number, or empty where undefined") {
+    // the residual not finite in step 1 (steps.csv, residuals.csv and mp_final.csv), and step 27
+    // of the shear not converging after 26 that did (history.csv too)
+    const Run nan = runProgram("compaction nelsy=64 lstps=1", "csv_notfinite");
+    const Run stuck = runProgram("shear nu=0.250686 cmType=1 mp=2 tol=1e-9", "csv_notconverged");
+    REQUIRE(nan.code == 1);
+    REQUIRE(stuck.code == 1);
+    CHECK(nan.err.find("the residual is not finite") != std::string::npos);
+    CHECK(stuck.err.find("load step 27 did not converge") != std::string::npos);
+    const CsvCheck a = checkCsvFields(nan.dir), b = checkCsvFields(stuck.dir);
+    CHECK(a.files == 3);
+    CHECK(b.files == 4);
+    CHECK(a.empty == 2);                                  // the last pass's fErr, and its step's
+    CHECK(b.empty == 0);
+    for (const std::string& f : a.bad) FAIL_CHECK(f);
+    for (const std::string& f : b.bad) FAIL_CHECK(f);
+    CHECK(a.bad.empty());
+    CHECK(b.bad.empty());
   }
 
   TEST_CASE("stops: a residual stalled far above round-off is never accepted at a floor") {
