@@ -13,9 +13,11 @@
 //     postPro
 // A step that ends with fErr > tol (or a NaN, or a singular stiffness) stops the
 // run (exit 1): the state of the last converged step is kept and written, the
-// failure is named on stderr. Two remedies, off by default: loadSteps.retry is
-// the one line of both in the handler of a failed step (ghost > 0: retry it with
-// the ghost penalty, on from then; substeps > 0: retry it in halves), and
+// failure is named on stderr, first: what else a run says there (a loose tol, a
+// step accepted at its floor) is kept in log.notes and follows it. Two remedies,
+// off by default: loadSteps.retry is the one line of both in the handler of a
+// failed step (ghost > 0: retry it with the ghost penalty, on from then;
+// substeps > 0: retry it in halves), and
 // addGhostPenalty the one line that applies the penalty in the Newton loop; a
 // third, split > 0, is splitPoints after updateMPs (stretched GIMP points cut in two). The
 // implicit boundaries of [Boundaries] (ibStiffness.h; none by default: nothing changes)
@@ -46,11 +48,13 @@
 #include <cstdio>
 #include <iostream>
 #include <new>
+#include <sstream>
 
 namespace ample {
 
 // helpers of this page (defined below it): bookkeeping, not algorithm
 static void checkAnalysis(const Analysis& an);
+static std::string looseTolWarning(const Analysis& an);
 static int lstpsMax(const Params& P);
 static void startStep(Analysis& an, int lstp, RunLog& log, bool quiet);
 static std::vector<BC> scaled(std::vector<BC> bc, double factor);
@@ -60,9 +64,9 @@ static void recordPass(RunLog& log, const std::vector<MaterialPoint>& mpData, in
                        double fErr, bool quiet);
 static double normalisedResidual(const Eigen::VectorXd& oobf, const Eigen::VectorXd& fext,
                                  const Eigen::VectorXd& frct, const Eigen::VectorXd& frctLast, int NRit);
-static void checkConverged(const Analysis& an, const RunLog& log, int lstp, int NRit, double fErr,
+static void checkConverged(const Analysis& an, RunLog& log, int lstp, int NRit, double fErr,
                            const Eigen::VectorXd& uvw, const Eigen::VectorXd& load, bool acceptFloor);
-static void recordStep(RunLog& log, const Increment& inc, int NRit, double fErr, const FreeSystem& Kff,
+static void recordStep(RunLog& log, const Increment& inc, int NRit, double fErr, FreeSystem& Kff,
                        bool converged);
 static void checkNotInverted(const std::vector<MaterialPoint>& mpData, int lstp, double fErr);
 
@@ -73,9 +77,7 @@ int ample(const Setup& setup, const Params& P, const RunOptions& opt) {
   an.name = setup.name;
   checkAnalysis(an);
   prepareOutput(opt.outDir);
-  if (an.tol > 1e-3)                                                 // allowed, but say what it means
-    std::cerr << "ample: " << setup.name << ": warning: tol=" << an.tol << " accepts load steps whose "
-              << "out-of-balance force is up to " << an.tol << " of the load (eq 35); the paper's is 1e-9\n";
+  log.notes += looseTolWarning(an);                                  // tol > 1e-3: allowed, but said
   auto stop = [&](const std::string& why) {                          // the run cannot go on
     if (!log.steps.empty() && !log.steps.back().converged) log.steps.back().seconds = log.stepClock.lap();
     restoreConverged(an.mpData);
@@ -95,6 +97,7 @@ int ample(const Setup& setup, const Params& P, const RunOptions& opt) {
   }
   log.t.total = total.lap();
   writeOutput(setup, P, an, log, opt.outDir, opt.quiet);
+  std::cerr << log.notes;                                            // after a stop's reason (stop)
   return log.converged ? 0 : 1;
 }
 
@@ -210,6 +213,16 @@ static void checkAnalysis(const Analysis& an) {
   if (an.mpData.empty()) throw InputError("the setup has no material points: its body is empty or lies outside its grid (check the size parameters in `ample " + an.name + " --help`)");
 }
 
+// a tol above 1e-3 is allowed (its range is (0, 1)) but not what the paper means by converged:
+// the warning, a line for stderr (log.notes: said after a stop's reason), or "" at a tighter tol
+static std::string looseTolWarning(const Analysis& an) {
+  if (an.tol <= 1e-3) return "";
+  std::ostringstream s;
+  s << "ample: " << an.name << ": warning: tol=" << an.tol << " accepts load steps whose "
+    << "out-of-balance force is up to " << an.tol << " of the load (eq 35); the paper's is 1e-9\n";
+  return s.str();
+}
+
 // the largest lstps the setup allows (what to try after a failure must be a valid input)
 static int lstpsMax(const Params& P) {
   for (const Param& p : P)
@@ -303,9 +316,9 @@ static double normalisedResidual(const Eigen::VectorXd& oobf, const Eigen::Vecto
 // estimate says (an estimate near 1 means that eq 35's denominator is round-off itself,
 // e.g. E = 1e30 against a load of order 1). uvw and load = fext + frct (+ IB reactions) of
 // the last pass are only read when the step failed. acceptFloor (--accept-floor, off by
-// default) accepts a step stalled at its floor as converged, said on stderr; it acts only
-// where the step has failed, so no run that converges changes.
-static void checkConverged(const Analysis& an, const RunLog& log, int lstp, int NRit, double fErr,
+// default) accepts a step stalled at its floor as converged, said on stderr at the run's end
+// (log.notes); it acts only where the step has failed, so no run that converges changes.
+static void checkConverged(const Analysis& an, RunLog& log, int lstp, int NRit, double fErr,
                            const Eigen::VectorXd& uvw, const Eigen::VectorXd& load, bool acceptFloor) {
   if (fErr <= an.tol) return;
   const double maxFloor = 1e-6;                                    // the largest credible floor
@@ -329,10 +342,12 @@ static void checkConverged(const Analysis& an, const RunLog& log, int lstp, int 
                                  "estimated round-off floor %.1e", hi, floor);
     std::snprintf(msg + n, sizeof msg - n, " (ample/solver/roundOffFloor.h): more passes will not help, a tol "
                   "above the floor would pass, e.g. tol=1e%d", tolExp);
-    if (acceptFloor && stalled) {
-      std::fprintf(stderr, "ample: load step %d accepted at its round-off floor (--accept-floor): "
-                   "fErr = %.3e > tol = %.1e, stalled at %.2e, estimated floor %.1e\n",
-                   lstp, fErr, an.tol, hi, floor);
+    if (acceptFloor && stalled) {                                  // said after the outcome (notes)
+      char note[300];
+      std::snprintf(note, sizeof note, "ample: load step %d accepted at its round-off floor (--accept-floor): "
+                    "fErr = %.3e > tol = %.1e, stalled at %.2e, estimated floor %.1e\n",
+                    lstp, fErr, an.tol, hi, floor);
+      log.notes += note;
       return;
     }
   } else if (an.NRitMax < 10 && !(three && fErr < r1 && r1 < r0 && fErr < 1e-3) &&
@@ -357,9 +372,12 @@ static void checkConverged(const Analysis& an, const RunLog& log, int lstp, int 
   throw NewtonFailure(msg, kind);
 }
 
-// one steps.csv row per attempt at a load step (its seconds are set at its end)
-static void recordStep(RunLog& log, const Increment& inc, int NRit, double fErr, const FreeSystem& Kff,
+// one steps.csv row per attempt at a load step (its seconds are set at its end); the solver's
+// notes (an LU fallback) join the run's, said after its outcome
+static void recordStep(RunLog& log, const Increment& inc, int NRit, double fErr, FreeSystem& Kff,
                        bool converged) {
+  log.notes += Kff.notes;
+  Kff.notes.clear();
   log.totalNRit += NRit;
   log.solverAnalyses = Kff.builds;                                   // so far (summary.json)
   log.luFallbacks = Kff.fallbacks;

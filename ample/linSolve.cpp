@@ -145,9 +145,9 @@ static Eigen::VectorXd factorisedSolve(FreeSystem& S, const Eigen::VectorXd& rhs
   if (S.choice != LinearSolver::LU) {                   // LDLT, LDLT_METIS, CHOLMOD, LDLT_HALVES
     Eigen::VectorXd x;
     if (symmetric(S.Kff) && chosenSymmetricSolve(S, rhs, x)) return x;
-    if (S.fallbacks++ == 0)
-      std::fprintf(stderr, "solver=%s: Kt(fd,fd) not symmetric to 1e-12, or its factorisation failed or was "
-                           "inexact: SparseLU solves such passes\n", solverNames()[size_t(S.choice)].c_str());
+    if (S.fallbacks++ == 0)                             // said at the run's end (ample: RunLog::notes)
+      S.notes += "ample: solver=" + solverNames()[size_t(S.choice)] + ": Kt(fd,fd) not symmetric to 1e-12, or "
+                 "its factorisation failed or was inexact: SparseLU solves such passes\n";
   }
   return luSolve(S, rhs);
 }

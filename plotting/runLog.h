@@ -4,6 +4,8 @@
 // Filled by the main loop (ample/ample.cpp), written by writeOutput as
 // steps.csv, residuals.csv and summary.json. Progress lines on stdout follow
 // the original code: one per load step and one per Newton-Raphson iteration.
+// What the run has to say on stderr besides a stop is kept in notes and
+// printed at its end, after the reason of a stop (the first stderr line).
 //--------------------------------------------------------------------------
 #pragma once
 #include <chrono>
@@ -71,6 +73,9 @@ struct RunLog {
   bool converged = true;
   int lastConverged = 0;        // last load step that converged
   std::string message;          // why the run stopped early (empty when complete)
+  std::string notes;            // lines for stderr said after the outcome, so that a stop's reason
+                                // is the first line: a loose tol, steps accepted at their floor
+                                // (--accept-floor), a solver's LU fallback (ample() prints them)
   Stopwatch stepClock;          // lapped at the start and the end of each load step
 };
 

@@ -137,6 +137,7 @@ TEST_SUITE("linSolve") {
     const LinSolveOut b = linSolve({{0, 0.1}}, chain(), oobf, 1, {1, 2, 3, 4}, &ldlt);
     CHECK((a.duvw - b.duvw).norm() <= 1e-14 * a.duvw.norm());
     CHECK(ldlt.fallbacks == 0);
+    CHECK(ldlt.notes.empty());
     SpMat K = chain();
     K.coeffRef(2, 3) += 0.5;  // same pattern, no longer symmetric
     const LinSolveOut c = linSolve({{0, 0.1}}, K, oobf, 1, {1, 2, 3, 4}, &ldlt);
@@ -144,6 +145,12 @@ TEST_SUITE("linSolve") {
     for (int d = 1; d < 5; ++d) CHECK(std::abs(r(d)) <= 1e-13);
     CHECK(ldlt.fallbacks == 1);
     CHECK(ldlt.builds == 1);  // the same pattern: the analysis kept
+    // said once, kept for the run's end (ample prints it after a stop's reason)
+    CHECK(ldlt.notes.find("solver=LDLT: Kt(fd,fd) not symmetric to 1e-12") != std::string::npos);
+    const std::string once = ldlt.notes;
+    linSolve({{0, 0.1}}, K, oobf, 1, {1, 2, 3, 4}, &ldlt);
+    CHECK(ldlt.fallbacks == 2);
+    CHECK(ldlt.notes == once);
   }
   // an entry without a mirror across the diagonal (above or below it) makes Kff unsymmetric:
   // SparseLU solves the pass at once, with no LDL^T factorisation tried first

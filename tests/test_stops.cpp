@@ -40,7 +40,7 @@ Run runProgram(const std::string& args, const std::string& name) {
   return r;
 }
 // the value after `key=` in a message's advice (after its "try " or "e.g. "), e.g. "0.01" for
-// key "ghost"; a warning line before the stop (a loose tol) is not advice
+// key "ghost"; the first such value is the stop's (the run's notes, a loose tol's warning, follow it)
 std::string advised(const std::string& message, const std::string& key) {
   const size_t t = std::min(message.find("try "), message.find("e.g. "));
   if (t == std::string::npos) return "";
@@ -100,6 +100,8 @@ CsvCheck checkCsvFields(const std::string& dir) {
   }
   return c;
 }
+// the first line of a text
+std::string firstLine(const std::string& text) { return text.substr(0, text.find('\n')); }
 }  // namespace
 
 TEST_SUITE("stops") {
@@ -184,6 +186,50 @@ TEST_SUITE("stops") {
     for (const std::string& f : b.bad) FAIL_CHECK(f);
     CHECK(a.bad.empty());
     CHECK(b.bad.empty());
+  }
+
+  // A run says other things on stderr (a loose tol's warning, a step accepted at its round-off
+  // floor, a solver's LU fallback): they are kept (RunLog::notes) and said after the reason of a
+  // stop, or at the end of a run that completes. Before, each was said when it happened, so it
+  // came first in the first three cases below, and the first line named no reason.
+  TEST_CASE("stops: the first stderr line of a non-zero exit names the reason, the run's other lines after it") {
+    struct Case {
+      const char* args;
+      int code;
+      const char* reason;   // in the first line
+      const char* note;     // in a later line (nullptr: none at all)
+    };
+    const Case cases[] = {
+        // a step that does not converge, under a loose tol (said at the start before)
+        {"compaction NRitMax=2 tol=0.0011", 1, "load step 1 did not converge", "warning: tol=0.0011"},
+        // the residual not finite, under a loose tol
+        {"compaction nelsy=64 lstps=1 tol=0.002", 1, "the residual is not finite", "warning: tol=0.002"},
+        // --accept-floor accepts steps 1-15 at their floor (a line each, said as accepted before),
+        // then a step does not converge (16 when measured)
+        {"collapse tol=1e-16 --accept-floor NRitMax=6", 1, "did not converge",
+         "ample: load step 1 accepted at its round-off floor (--accept-floor)"},
+        // bad input: refused before any run, so no warning at all; the parameter is named
+        {"compaction tol=2", 2, "parameter 'tol' = 2 is out of range", nullptr},
+        // bad input found by the setup: its message alone, no warning of the loose tol
+        {"ibcantilever E=556278 tol=0.5", 2, "exceeds the beam's length", nullptr},
+    };
+    int n = 0;
+    for (const Case& c : cases) {
+      CAPTURE(c.args);
+      const Run r = runProgram(c.args, "firstline_" + std::to_string(n++));
+      CAPTURE(r.err);
+      CHECK(r.code == c.code);
+      const std::string first = firstLine(r.err);
+      CHECK(first.rfind("ample: ", 0) == 0);
+      CHECK(first.find(c.reason) != std::string::npos);
+      const size_t note = c.note ? r.err.find(c.note) : r.err.find("warning");
+      if (c.note) CHECK((note != std::string::npos && note > first.size()));  // kept, and after it
+      else CHECK(note == std::string::npos);
+    }
+    // a run that completes still says its notes, at its end
+    const Run done = runProgram("compaction tol=0.002", "firstline_done");
+    CHECK(done.code == 0);
+    CHECK(done.err.find("warning: tol=0.002 accepts load steps") != std::string::npos);
   }
 
   TEST_CASE("stops: a residual stalled far above round-off is never accepted at a floor") {

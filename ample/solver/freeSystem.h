@@ -36,7 +36,8 @@
 // A symmetric choice whose pass is not symmetric (or whose factorisation
 // fails, e.g. LL^T of an indefinite Kt, or whose solve has a backward error
 // above 1e-12: linSolve.cpp) falls back to SparseLU for that pass,
-// said once on stderr (fallbacks counts); SparseLU is analysed when first needed.
+// said once (notes: ample prints it on stderr at the run's end; fallbacks counts);
+// SparseLU is analysed when first needed.
 // What it saves: the extraction and the ordering in every pass (see the
 // closing figures in docs/structure.md).
 // Inputs:  Kt (nDoF x nDoF, compressed, rows sorted in each column: as stiffnessPattern
@@ -83,6 +84,8 @@ struct FreeSystem {
   Eigen::UmfPackLU<SpMat> umfpack;             // UMFPACK
 #endif
   int builds = 0, fallbacks = 0;               // analyses run; symmetric passes solved by LU
+  std::string notes;                           // lines for stderr (the first LU fallback), taken
+                                               // by the run's log (ample.cpp recordStep)
   bool factorHeld = false;                     // KRYLOV: ldlt or lu holds a factor of this step
   bool factorSymmetric = false;                // KRYLOV: that factor is ldlt's (Kff was symmetric)
   int krylovMaxIt = 30;                        // KRYLOV: iterations before it refactorises
