@@ -29,8 +29,9 @@
 // Also kept for the step: exp(2 eps_e,n) of each point (eq 9, out.bEn) and
 // whether Kt's pattern is node-blocked (then addNodeBlocks assembles).
 // With OpenMP (CMake option AMPLE_OPENMP) and at least 2048 points per thread
-// the point loop runs on OMP_NUM_THREADS threads, each adding into its own
-// fint and Kt values, summed in thread order: deterministic for a thread count.
+// (pointShares.h) the point loop runs on OMP_NUM_THREADS threads, each owning a
+// range of nodes (their rows of fint, their columns of Kt) and adding the points
+// that link them in point order: the serial loop's numbers, bit for bit.
 // Inputs:  uvw (nDoF) displacement increment of the step · mpData · form ·
 //          out (in place: Kt with the step's pattern, or empty)
 // Outputs: out.fint (nDoF) · out.Kt (nDoF x nDoF) · mpData (F, sig, epsE) updated
@@ -49,12 +50,9 @@ struct DetMPsOut {
   std::vector<Matrix3d> bEn;     // exp(2 eps_e,n) of each point (eq 9; UL, PC)
   bool blocked = false;          // Kt's pattern is node-blocked (addNodeBlocks)
   long blockedNnz = -1;          // the pattern size that was checked
-  struct Part {                  // OpenMP: thread t > 0 adds into part[t - 1]
-    Eigen::VectorXd fint;
-    std::vector<double> Kval;    // the values of Kt's pattern
-  };
-  std::vector<Part> part;
 };
+
+using PointStiffness = Eigen::Matrix<double, nD * MAXN, nD * MAXN>;  // k_p, its 2 nn x 2 nn corner
 
 // exp(2 eps_e,n) of every point (eq 9), once per load step
 std::vector<Matrix3d> elasticLeftCG(const std::vector<MaterialPoint>& mpData);

@@ -49,8 +49,15 @@ nodes; the program should then stop with a message, exit 1, not take the machine
 worker runs the program with OMP_NUM_THREADS=1 unless --omp-threads says otherwise (2 workers
 on 2 cores), and the draw does not depend on --jobs: seed and count give the same runs.
 
+Pairs (--pairs F): a share F of the draws runs twice, with OMP_NUM_THREADS=1 and 2 and
+AMPLE_POINTS_PER_THREAD=8 (so that even a small run's point loop takes the threaded path,
+pointShares.h); each pair must end with the same exit code and, where both complete, the same
+Newton-Raphson passes and the same mp_final.csv byte for byte (a run's outcome does not depend
+on the number of threads). CTest random.runs pairs a third of its draws.
+
 Usage: tests/random_runs.py --ample PATH [--seed S] [--count N] [--jobs J] [--timeout T]
                             [--out DIR] [--keep] [--setup NAME] [--json FILE] [--omp-threads N]
+                            [--pairs F]
 Python 3 standard library only.
 """
 import argparse
@@ -390,14 +397,16 @@ def check_summary(outdir, rc, failures, notes):
 # ---------------------------------------------------------------------------------------------
 # one run
 
-def run_one(index, argv, ample, root, timeout, omp_threads, keep):
-    outdir = os.path.join(root, "run%05d_%s" % (index, argv[0]))
+def run_one(index, argv, ample, root, timeout, omp_threads, keep, pair=False):
+    outdir = os.path.join(root, "run%05d_%s%s" % (index, argv[0], "_t%d" % omp_threads if pair else ""))
     if os.path.exists(outdir):
         shutil.rmtree(outdir)
     cmd = [ample] + argv + ["--out", outdir, "--quiet"]
     env = dict(os.environ)
     if omp_threads:
         env["OMP_NUM_THREADS"] = str(omp_threads)
+    if pair:  # both runs of a pair: even a small run's point loop on the threads
+        env["AMPLE_POINTS_PER_THREAD"] = str(PAIR_POINTS_PER_THREAD)
     failures, notes = set(), []
     start = time.monotonic()
     try:
@@ -429,12 +438,55 @@ def run_one(index, argv, ample, root, timeout, omp_threads, keep):
     if rc in (0, 1, 2) and not out_of_memory:  # std::bad_alloc ends the run before summary.json
         check_summary(outdir, rc, failures, notes)
     first = next((l.strip() for l in stderr.splitlines() if l.strip()), "")
-    if not failures and not keep and os.path.isdir(outdir):
+    passes, final = pair_figures(outdir) if pair and rc is not None else (None, None)
+    if not failures and not keep and not pair and os.path.isdir(outdir):
         shutil.rmtree(outdir, ignore_errors=True)
     prefix = "OMP_NUM_THREADS=%s " % omp_threads if omp_threads else ""
+    if pair:
+        prefix += "AMPLE_POINTS_PER_THREAD=%d " % PAIR_POINTS_PER_THREAD
     return {"index": index, "setup": argv[0], "command": prefix + shlex.join(cmd), "exit_code": rc,
             "outcome": outcome, "classes": sorted(failures), "notes": notes, "stderr": first,
-            "seconds": round(seconds, 3)}
+            "seconds": round(seconds, 3), "outdir": outdir, "passes": passes, "mp_final": final}
+
+
+# ---------------------------------------------------------------------------------------------
+# pairs: the same draw on 1 and on 2 threads (a run's outcome must not depend on the threads)
+
+PAIR_POINTS_PER_THREAD = 8  # pointShares.h: 2,048 by default; 8 puts nearly every run on 2 threads
+
+
+def pair_figures(outdir):
+    """Newton-Raphson passes (summary.json) and the bytes of mp_final.csv, None where absent."""
+    passes = final = None
+    try:
+        with open(os.path.join(outdir, "summary.json"), encoding="utf-8") as f:
+            passes = json.loads(f.read(), parse_constant=refuse_constant).get("total_NR_iterations")
+    except (OSError, ValueError, StrictJsonError, AttributeError):
+        pass
+    try:
+        with open(os.path.join(outdir, "mp_final.csv"), "rb") as f:
+            final = f.read()
+    except OSError:
+        pass
+    return passes, final
+
+
+def compare_pair(one, two, keep):
+    """The same exit code; where both completed, the same passes and the same mp_final.csv."""
+    why = ["on 2 threads: " + ", ".join(two["classes"])] if two["classes"] else []
+    if one["exit_code"] != two["exit_code"]:
+        why.append("exit %s on 1 thread, %s on 2" % (one["exit_code"], two["exit_code"]))
+    elif one["exit_code"] == 0:
+        if one["passes"] != two["passes"]:
+            why.append("%s Newton-Raphson passes on 1 thread, %s on 2" % (one["passes"], two["passes"]))
+        if one["mp_final"] != two["mp_final"]:
+            why.append("mp_final.csv differs")
+    if not why and not keep:
+        for r in (one, two):
+            shutil.rmtree(r["outdir"], ignore_errors=True)
+    for r in (one, two):
+        del r["mp_final"]
+    return why
 
 
 def message_group(line, setups):
@@ -467,10 +519,16 @@ def main():
                     help="OMP_NUM_THREADS of each run (default 1; 0: leave the environment's)")
     ap.add_argument("--mem-limit", type=int, default=2048,
                     help="address space of each run in MB (ulimit -v; default 2048, 0: none)")
+    ap.add_argument("--pairs", type=float, default=0.0,
+                    help="share of the draws (0 .. 1, default 0) run as pairs on 1 and 2 threads "
+                         "(AMPLE_POINTS_PER_THREAD=%d) and compared: exit code, passes, mp_final.csv"
+                         % PAIR_POINTS_PER_THREAD)
     ap.add_argument("--list-only", action="store_true", help="print the drawn command lines, run nothing")
     args = ap.parse_args()
     if args.count < 1 or args.jobs < 1 or args.timeout <= 0:
         ap.error("--count and --jobs must be at least 1, --timeout above 0")
+    if not 0 <= args.pairs <= 1:
+        ap.error("--pairs must be in [0, 1]")
     ample = os.path.abspath(args.ample)
     if not os.access(ample, os.X_OK):
         ap.error("not a program: %s" % ample)
@@ -499,17 +557,34 @@ def main():
              "%d MB a run (ulimit -v %d)" % (args.mem_limit, args.mem_limit * 1024) if args.mem_limit > 0
              else "not limited", root), flush=True)
 
+    # every draw whose index falls on the share's grid is a pair (independent of the draw itself)
+    paired = [int(i * args.pairs) != int((i + 1) * args.pairs) for i in range(args.count)]
     start = time.monotonic()
-    records = []
+    records, pairs = [], {}
     with concurrent.futures.ThreadPoolExecutor(max_workers=args.jobs) as pool:
-        futures = [pool.submit(run_one, i + 1, argv, ample, root, args.timeout, args.omp_threads, args.keep)
-                   for i, argv in enumerate(runs)]
+        futures = {}
+        for i, argv in enumerate(runs):
+            if paired[i]:
+                for nt in (1, 2):
+                    futures[pool.submit(run_one, i + 1, argv, ample, root, args.timeout, nt, args.keep, True)] = nt
+            else:
+                futures[pool.submit(run_one, i + 1, argv, ample, root, args.timeout, args.omp_threads,
+                                    args.keep)] = 0
         for n, fut in enumerate(concurrent.futures.as_completed(futures), 1):
-            records.append(fut.result())
+            r = fut.result()
+            if futures[fut]:
+                pairs.setdefault(r["index"], {})[futures[fut]] = r
+            if futures[fut] != 2:
+                records.append(r)
             if n % 50 == 0 or n == len(futures):
                 print("  %d / %d runs, %.0f s" % (n, len(futures), time.monotonic() - start), flush=True)
     wall = time.monotonic() - start
     records.sort(key=lambda r: r["index"])
+    pair_failed = []
+    for index in sorted(pairs):
+        why = compare_pair(pairs[index][1], pairs[index][2], args.keep)
+        if why:
+            pair_failed.append((index, why, pairs[index]))
 
     if args.json:
         with open(args.json, "w", encoding="utf-8") as f:
@@ -540,11 +615,21 @@ def main():
             print("  %4d  %-8s %s   [%s]" % (len(rs), outcome, words,
                                             ", ".join(sorted(set(r["setup"] for r in rs)))))
 
+    if pairs:
+        print("pairs on 1 and 2 threads: %d, %d agree (exit code; passes and mp_final.csv where both completed)"
+              % (len(pairs), len(pairs) - len(pair_failed)))
     stub = next((r for r in records if r["exit_code"] == 3 and "needs exercise" in r["stderr"]), None)
     if stub:  # the student copy: a run reached an exercise not done yet, so nothing here is graded
         print("\nrandom_runs.py: skipped: %s" % stub["stderr"].strip().splitlines()[-1])
         return 77
     failed = [r for r in records if r["classes"]]
+    for index, why, pair in pair_failed:
+        print("\npair #%d differs on 1 and 2 threads: %s" % (index, "; ".join(why)))
+        for nt in (1, 2):
+            print("    " + pair[nt]["command"])
+    if pair_failed:
+        print("\nrandom_runs.py: FAILED: %d of %d pairs differ on 1 and 2 threads (seed %d)"
+              % (len(pair_failed), len(pairs), args.seed))
     if failed:
         print("\nfailures (%d runs), each with its command line:" % len(failed))
         for r in failed:
@@ -552,6 +637,8 @@ def main():
                                          "; ".join(r["notes"][:3]), (" | " + r["stderr"]) if r["stderr"] else ""))
             print("    " + r["command"])
         print("\nrandom_runs.py: FAILED: %d of %d runs failed a check (seed %d)" % (len(failed), len(records), args.seed))
+        return 1
+    if pair_failed:
         return 1
     print("\nrandom_runs.py: all %d runs passed every check (seed %d)" % (len(records), args.seed))
     return 0

@@ -9,6 +9,7 @@
 #include "setups/setupHelpers.h"
 #include "setups/setups.h"
 #include <doctest/doctest.h>
+#include <cstdlib>
 #include <random>
 #include <string>
 #ifdef _OPENMP
@@ -81,14 +82,17 @@ TEST_SUITE("pointShares") {
     CHECK(what == "share 0 from point 0");
   }
 
-  TEST_CASE("pointThreads: serial below 2,048 points a thread") {
+  TEST_CASE("pointThreads: serial below pointsPerThread() points a thread (2,048 unless AMPLE_POINTS_PER_THREAD)") {
+    const char* env = std::getenv("AMPLE_POINTS_PER_THREAD");
+    if (!env) CHECK(pointsPerThread() == 2048);
+    const int least = pointsPerThread();
     CHECK(pointThreads(0) == 1);
-    CHECK(pointThreads(4095) == 1);
+    CHECK(pointThreads(2 * least - 1) == 1);
 #ifdef _OPENMP
     const int before = omp_get_max_threads();
     omp_set_num_threads(2);
-    CHECK(pointThreads(4096) == 2);
-    CHECK(pointThreads(1 << 20) == 2);
+    CHECK(pointThreads(2 * least) == 2);
+    CHECK(pointThreads(1 << 30) == 2);
     omp_set_num_threads(before);
 #endif
   }

@@ -5,6 +5,7 @@
 //--------------------------------------------------------------------------
 #include "pointShares.h"
 #include <algorithm>
+#include <cstdlib>
 #include <exception>
 #include <vector>
 #ifdef _OPENMP
@@ -13,9 +14,19 @@
 
 namespace ample {
 
+int pointsPerThread() {
+  static const int least = [] {                                // read once
+    const char* v = std::getenv("AMPLE_POINTS_PER_THREAD");
+    char* end = nullptr;
+    const long n = v ? std::strtol(v, &end, 10) : 0;
+    return (v && *v && *end == 0 && n >= 1 && n <= (1 << 30)) ? int(n) : 2048;
+  }();
+  return least;
+}
+
 int pointThreads(int np) {
 #ifdef _OPENMP
-  return std::max(1, std::min(omp_get_max_threads(), np / 2048));
+  return std::max(1, std::min(omp_get_max_threads(), np / pointsPerThread()));
 #else
   (void)np;
   return 1;

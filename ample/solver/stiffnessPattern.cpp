@@ -43,9 +43,10 @@ SpMat stiffnessPattern(int nDoF, const std::vector<MaterialPoint>& mpData) {
 // Kt's pattern already holds the entries of ke: walk each column once from the
 // point's first dof instead of searching for every entry (any pattern, any dofs)
 void addToPattern(const SpMat& Kt, double* val, const int* d, int n,
-                  const Eigen::Ref<const Eigen::MatrixXd>& ke) {
+                  const Eigen::Ref<const Eigen::MatrixXd>& ke, int c0, int c1) {
   const int* inner = Kt.innerIndexPtr();
   for (int q = 0; q < n; ++q) {
+    if (d[q] < c0 || d[q] >= c1) continue;
     int pos = int(std::lower_bound(inner + Kt.outerIndexPtr()[d[q]],
                                    inner + Kt.outerIndexPtr()[d[q] + 1], d[0]) - inner);
     for (int p = 0; p < n; ++p) {
@@ -76,11 +77,12 @@ bool nodeBlocked(const SpMat& Kt) {
 // pairs; the 2 x 2 block of nodes (a, b) sits at pos, pos + 1 (column x of b)
 // and pos + len, pos + len + 1 (column y of b)
 void addNodeBlocks(const SpMat& Kt, double* val, const int* nIN, int nn,
-                   const Eigen::Ref<const Eigen::MatrixXd>& ke) {
+                   const Eigen::Ref<const Eigen::MatrixXd>& ke, int n0, int n1) {
   static_assert(nD == 2, "the 2 x 2 node blocks");
   const int* outer = Kt.outerIndexPtr();
   const int* inner = Kt.innerIndexPtr();
   for (int b = 0; b < nn; ++b) {
+    if (nIN[b] < n0 || nIN[b] >= n1) continue;
     const int cx = dof(nIN[b], 0), len = outer[cx + 1] - outer[cx];
     int pos = int(std::lower_bound(inner + outer[cx], inner + outer[cx + 1], dof(nIN[0], 0)) - inner);
     for (int a = 0; a < nn; ++a) {

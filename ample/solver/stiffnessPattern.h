@@ -24,6 +24,7 @@
 #pragma once
 #include "ample/mpData.h"
 #include <Eigen/SparseCore>
+#include <climits>
 
 namespace ample {
 
@@ -31,10 +32,11 @@ using SpMat = Eigen::SparseMatrix<double>;  // column-major compressed sparse ma
 
 SpMat stiffnessPattern(int nDoF, const std::vector<MaterialPoint>& mpData);
 // val: the values of Kt's pattern (Kt.valuePtr(), or a buffer of the same length)
+// (only the columns [c0, c1), resp. those of the nodes [n0, n1): a thread's share)
 void addToPattern(const SpMat& Kt, double* val, const int* d, int n,
-                  const Eigen::Ref<const Eigen::MatrixXd>& ke);
+                  const Eigen::Ref<const Eigen::MatrixXd>& ke, int c0 = 0, int c1 = INT_MAX);
 bool nodeBlocked(const SpMat& Kt);
 void addNodeBlocks(const SpMat& Kt, double* val, const int* nIN, int nn,
-                   const Eigen::Ref<const Eigen::MatrixXd>& ke);
+                   const Eigen::Ref<const Eigen::MatrixXd>& ke, int n0 = 0, int n1 = INT_MAX);
 
 }  // namespace ample
