@@ -131,7 +131,7 @@ void solve(Analysis& an, RunLog& log, const RunOptions& opt) {
         const LinSolveOut ls = timed(T.linSolve, linSolve, bc, mps.Kt, oobf, NRit, fd, &Kff);
         uvw += ls.duvw;                                              // eq 29
         frct += ls.drct;
-        timed(T.detMPs, [&] { detMPs(uvw, mpData, an.formulation, mps); });  // fint, Kt in place
+        timed(T.detMPs, [&] { opt.pointLoop(uvw, mpData, an.formulation, mps); });  // detMPs: fint, Kt
         addGhostPenalty(Kgp, uvw, mps.Kt, mps.fint);                 // remedy (off: nothing)
         fib = addImplicitBoundaries(ib, uvw, mps.Kt, mps.fint);      // [Boundaries] (none: 0)
         oobf = fext - mps.fint + frct;                               // eq 31 with reactions

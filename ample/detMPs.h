@@ -20,18 +20,10 @@
 //   and F stays I, so the volume stays V_p0 (updateMPs: V_p = det(F) V_p0).
 // Plane strain: only the in-plane displacement gradient enters; F, b_e and
 // stress are 3D.
-// Kt is assembled into the sparsity of the load step (the points link the
-// same nodes in every iteration): the main loop passes its DetMPsOut, whose Kt
-// from the last pass (or stiffnessPattern, once per step) keeps its pattern
-// and only has its values refilled, in place (an Eigen 3.4 SparseMatrix has
-// no move constructor: a result returned by value would copy it every pass).
-// An empty Kt gets its pattern here. The second form returns a fresh result.
-// Also kept for the step: exp(2 eps_e,n) of each point (eq 9, out.bEn) and
-// whether Kt's pattern is node-blocked (then addNodeBlocks assembles).
-// With OpenMP (CMake option AMPLE_OPENMP) and at least 2048 points per thread
-// (pointShares.h) the point loop runs on OMP_NUM_THREADS threads, each owning a
-// range of nodes (their rows of fint, their columns of Kt) and adding the points
-// that link them in point order: the serial loop's numbers, bit for bit.
+// Kt is assembled into the sparsity of the load step (the main loop passes its
+// DetMPsOut, whose Kt keeps its pattern and only has its values refilled; an empty
+// Kt gets its pattern here). The second form returns a fresh result.
+// Large runs take fast/detMPsFast.h instead: the same numbers, bit for bit.
 // Inputs:  uvw (nDoF) displacement increment of the step · mpData · form ·
 //          out (in place: Kt with the step's pattern, or empty)
 // Outputs: out.fint (nDoF) · out.Kt (nDoF x nDoF) · mpData (F, sig, epsE) updated
@@ -46,7 +38,7 @@ namespace ample {
 struct DetMPsOut {
   Eigen::VectorXd fint;          // nodal internal forces
   SpMat Kt;                      // global tangent stiffness
-  // kept for the load step (the main loop's DetMPsOut lives for one step):
+  // kept for the load step by detMPsFast (fast/detMPsFast.h); detMPs leaves them alone
   std::vector<Matrix3d> bEn;     // exp(2 eps_e,n) of each point (eq 9; UL, PC)
   bool blocked = false;          // Kt's pattern is node-blocked (addNodeBlocks)
   long blockedNnz = -1;          // the pattern size that was checked
@@ -54,12 +46,20 @@ struct DetMPsOut {
 
 using PointStiffness = Eigen::Matrix<double, nD * MAXN, nD * MAXN>;  // k_p, its 2 nn x 2 nn corner
 
-// exp(2 eps_e,n) of every point (eq 9), once per load step
-std::vector<Matrix3d> elasticLeftCG(const std::vector<MaterialPoint>& mpData);
-
 void detMPs(const Eigen::VectorXd& uvw, std::vector<MaterialPoint>& mpData, Formulation form,
             DetMPsOut& out);
 DetMPsOut detMPs(const Eigen::VectorXd& uvw, std::vector<MaterialPoint>& mpData,
                  Formulation form = Formulation::UL);
+using PointLoop = void (*)(const Eigen::VectorXd& uvw, std::vector<MaterialPoint>& mpData, Formulation form,
+                           DetMPsOut& out);  // detMPs, or a replacement of it as a whole
+
+// the steps of the loop body, for detMPsFast:
+// exp(2 eps_e,n) of a point (eq 9), its elastic left Cauchy-Green tensor at the start of the step
+Matrix3d elasticLeftCG(const MaterialPoint& mp);
+// the point's state (F, sigma, eps_e) from uvw; f_p added into fint; k_p into ke (eqs 5-18, 14, 16)
+void addPoint(const Eigen::VectorXd& uvw, const Matrix3d& bEn, Formulation form, MaterialPoint& mp,
+              Eigen::VectorXd& fint, PointStiffness& ke);
+// k_p into the values of Kt's pattern (eq 30)
+void assemble(const MaterialPoint& mp, const PointStiffness& ke, SpMat& Kt);
 
 }  // namespace ample

@@ -9,6 +9,8 @@
 #   2 parts         ample/basis/* ample/boundaries/* ample/remedies/*
 #   3 steps         ample/*.h ample/*.cpp (the functions the loop calls: elemMPinfo,
 #                   detExtForce, detFDoFs, linSolve, detMPs, updateMPs)
+#   3 fast          ample/fast/* (a function of the steps replaced as a whole for large
+#                   runs; included by ample/program/* only, which chooses it)
 #   4 setups        setups/*
 #   5 output        plotting/*
 #   6 loop          ample/ample.h ample/ample.cpp
@@ -24,6 +26,7 @@ layer() {  # layer of a project file, -1 for one outside the layered tree
   case "$1" in
     ample/mpData.h|ample/mpData.cpp|ample/basisArena.h|ample/errors.h|ample/analysis.h|ample/classroom/exercise.h|ample/boundaries/boundary.h|constitutive/*) echo 0 ;;
     ample/meshes/*|ample/stiffness/*|ample/solver/*) echo 1 ;;
+    ample/fast/*) echo 3 ;;
     ample/basis/*|ample/boundaries/*|ample/remedies/*) echo 2 ;;
     ample/ample.h|ample/ample.cpp) echo 6 ;;
     ample/program/*) echo 7 ;;
@@ -51,6 +54,9 @@ for f in ample/* ample/*/* constitutive/* setups/* plotting/*; do
     if [ "$lt" -gt "$lf" ]; then
       echo "$f (layer $lf) includes $t (layer $lt): an include up a layer"; bad=1
     fi
+    case "$t" in ample/fast/*)   # an extension: only the program (and its own room) chooses it
+      case "$f" in ample/fast/*|ample/program/*) ;; *) echo "$f includes $t: the core includes no extension (ample/fast/ is chosen by ample/program/)"; bad=1 ;; esac
+    esac
     case "$f" in constitutive/*)
       case "$t" in constitutive/*|ample/classroom/exercise.h) ;; *) echo "$f includes $t: constitutive/ must stand alone"; bad=1 ;; esac
     esac

@@ -1,0 +1,159 @@
+//--------------------------------------------------------------------------
+// detMPsFast — detMPs for large runs: the same numbers, faster
+//--------------------------------------------------------------------------
+// See detMPsFast.h.
+//--------------------------------------------------------------------------
+#include "detMPsFast.h"
+#include "ample/solver/pointShares.h"
+#include "ample/solver/stiffnessPattern.h"
+#include "ample/stiffness/tensorOps.h"
+#include <algorithm>
+#include <exception>
+
+namespace ample {
+
+namespace {
+
+// k_p into the values Kval of Kt's pattern (eq 30), the columns of nodes [n0, n1) only
+// (the serial loop: every node)
+void assembleNodes(const SpMat& pattern, bool blocked, const MaterialPoint& mp, const PointStiffness& ke,
+              double* Kval, int n0, int n1) {
+  const int ne = nD * mp.nn;
+  if (blocked) return addNodeBlocks(pattern, Kval, mp.nIN.data(), mp.nn, ke.topLeftCorner(ne, ne), n0, n1);
+  int d[nD * MAXN];                                             // the point's dofs, ascending
+  for (int a = 0; a < mp.nn; ++a)
+    for (int i = 0; i < nD; ++i) d[nD * a + i] = dof(mp.nIN[a], i);
+  addToPattern(pattern, Kval, d, ne, ke.topLeftCorner(ne, ne), dof(n0, 0), dof(n1, 0));
+}
+
+// asks for memory the loop will read soon while this point is computed: the cache lines
+// of the point after next (a MaterialPoint, sizeof 544) and the next point's slice of the
+// basis arena (its nIN, Svp, dSvp: 28 B a node), whose place that point, fetched one
+// turn earlier, now tells. Without it the loop waits for the first loads of each point
+// (perf, at 1,088 B a point: a quarter of addPoint's time; collapse a = 8, detMPs 25-35 %
+// faster with it, the same numbers)
+void prefetchAhead(const std::vector<MaterialPoint>& mpData, int p, int end) {
+#if defined(__GNUC__)
+  auto lines = [](const void* first, size_t bytes) {  // every 64-byte line of these bytes
+    const char* b = static_cast<const char*>(first);
+    for (size_t k = 0; k < bytes; k += 64) __builtin_prefetch(b + k);
+    if (bytes > 0) __builtin_prefetch(b + bytes - 1);    // the last, when they straddle one more
+  };
+  if (p + 2 < end) lines(&mpData[p + 2], sizeof(MaterialPoint));
+  if (p + 1 < end) {
+    const MaterialPoint& next = mpData[p + 1];
+    lines(next.nIN.data(), next.nn * sizeof(int));
+    lines(next.Svp.data(), next.nn * sizeof(double));
+    lines(next.dSvp.data(), next.nn * nD * sizeof(double));
+  }
+#else
+  (void)mpData, (void)p, (void)end;
+#endif
+}
+
+// the point loop of detMPs on nt threads, each owning a range of nodes: thread t adds
+// the f_p and k_p of every point that links one of its nodes, in point order, into its
+// rows of fint and its columns of Kt. Each entry then gets the same terms in the same
+// order as in the serial loop: the same numbers bit for bit, for any number of threads.
+// A point whose nodes lie in two ranges is computed by both: its state (F, sig, epsE) is
+// written by the owner of its first node, the other works on a copy taken before any
+// point is computed. The ranges are cut so that each thread owns the first nodes of about
+// np / nt points.
+void detMPsOnThreads(const Eigen::VectorXd& uvw, std::vector<MaterialPoint>& mpData, Formulation form,
+                     int nt, DetMPsOut& out) {
+  const int np = int(mpData.size()), nodes = int(uvw.size()) / nD;
+  auto firstNode = [&](int p) { return mpData[p].nn > 0 ? mpData[p].nIN[0] : 0; };
+  std::vector<int> cut(nt + 1, nodes);                          // thread t owns [cut[t], cut[t+1])
+  std::vector<int> first(nodes + 1, 0);                         // points by their first node
+  for (int p = 0; p < np; ++p) first[firstNode(p) + 1]++;
+  cut[0] = 0;
+  for (int n = 0, seen = 0, t = 1; n < nodes && t < nt; ++n) {
+    seen += first[n + 1];
+    while (t < nt && long(seen) * nt >= long(np) * t) cut[t++] = n + 1;
+  }
+  struct Share {
+    std::vector<int> points;                                    // those linking its nodes, in order
+    std::vector<MaterialPoint> copies;                          // of those it does not own
+    Eigen::VectorXd fint;                                       // its rows are read
+    int failedAt;                                               // the first point that threw
+    std::exception_ptr failed;
+  };
+  std::vector<Share> share(nt);
+  forPointShares(nt, nt, [&](int t, int, int) {                 // 1: the lists (mpData read only)
+    Share& s = share[t];
+    for (int p = 0; p < np; ++p) {
+      const MaterialPoint& mp = mpData[p];
+      const int* nIN = mp.nIN.data();
+      const bool owner = firstNode(p) >= cut[t] && firstNode(p) < cut[t + 1];
+      const bool links = mp.nn > 0 && nIN[mp.nn - 1] >= cut[t] && nIN[0] < cut[t + 1] &&
+                         *std::lower_bound(nIN, nIN + mp.nn, cut[t]) < cut[t + 1];
+      if (!owner && !links) continue;
+      s.points.push_back(owner ? p : -1 - p);                   // -1 - p: work on a copy
+      if (!owner) s.copies.push_back(mp);
+    }
+  });
+  static const Matrix3d none = Matrix3d::Identity();
+  forPointShares(nt, nt, [&](int t, int, int) {                 // 2: the points
+    Share& s = share[t];
+    const int n0 = cut[t], n1 = cut[t + 1];
+    s.fint.setZero(uvw.size());
+    s.failedAt = np;
+    PointStiffness ke;
+    for (size_t k = 0, c = 0; k < s.points.size(); ++k) {
+      const int p = s.points[k] >= 0 ? s.points[k] : -1 - s.points[k];
+      MaterialPoint& mp = s.points[k] >= 0 ? mpData[p] : s.copies[c++];
+      prefetchAhead(mpData, p, np);                             // memory only: the next points
+      try {
+        addPoint(uvw, out.bEn.empty() ? none : out.bEn[p], form, mp, s.fint, ke);
+      } catch (...) {
+        s.failedAt = p, s.failed = std::current_exception();
+        return;
+      }
+      assembleNodes(out.Kt, out.blocked, mp, ke, out.Kt.valuePtr(), n0, n1);
+    }
+    const int r0 = dof(n0, 0), rows = dof(n1, 0) - r0;
+    out.fint.segment(r0, rows) = s.fint.segment(r0, rows);
+  });
+  int t = 0;                                                    // the first failure in point order
+  for (int u = 1; u < nt; ++u)
+    if (share[u].failedAt < share[t].failedAt) t = u;
+  if (share[t].failed) std::rethrow_exception(share[t].failed);
+}
+
+}  // namespace
+
+// exp(2 eps_e,n) of every point (eq 9): it does not change within a load step
+std::vector<Matrix3d> elasticLeftCGs(const std::vector<MaterialPoint>& mpData) {
+  const int np = int(mpData.size());
+  std::vector<Matrix3d> bEn(np);
+  forPointShares(np, pointThreads(np), [&](int, int begin, int end) {  // each point its own
+    for (int p = begin; p < end; ++p) bEn[p] = elasticLeftCG(mpData[p]);
+  });
+  return bEn;
+}
+
+void detMPsFast(const Eigen::VectorXd& uvw, std::vector<MaterialPoint>& mpData, Formulation form,
+                DetMPsOut& out) {
+  const int nDoF = int(uvw.size()), np = int(mpData.size());
+  if (np < fastFrom) return detMPs(uvw, mpData, form, out);    // small: the core loop
+  if (out.Kt.rows() != nDoF || out.Kt.nonZeros() == 0) out.Kt = stiffnessPattern(nDoF, mpData);
+  if (form != Formulation::SS && int(out.bEn.size()) != np) out.bEn = elasticLeftCGs(mpData);
+  if (out.blockedNnz != out.Kt.nonZeros()) {                    // a new pattern (or one grown by
+    out.blocked = nodeBlocked(out.Kt);                          // the ghost penalty / IB terms)
+    out.blockedNnz = out.Kt.nonZeros();
+  }
+  out.fint.setZero(nDoF);
+  out.Kt.coeffs().setZero();
+  const int nt = pointThreads(np);
+  if (nt > 1) return detMPsOnThreads(uvw, mpData, form, nt, out);  // the same sums, on nt threads
+  static const Matrix3d none = Matrix3d::Identity();            // SS: no bEn
+  PointStiffness ke;
+  for (int p = 0; p < np; ++p) {
+    prefetchAhead(mpData, p, np);                               // memory only: the next points
+    MaterialPoint& mp = mpData[p];
+    addPoint(uvw, out.bEn.empty() ? none : out.bEn[p], form, mp, out.fint, ke);
+    assembleNodes(out.Kt, out.blocked, mp, ke, out.Kt.valuePtr(), 0, nDoF / nD);
+  }
+}
+
+}  // namespace ample

@@ -1,0 +1,32 @@
+//--------------------------------------------------------------------------
+// detMPsFast — detMPs for large runs: the same numbers, faster
+//--------------------------------------------------------------------------
+// Replaces detMPs (ample/detMPs.h) as a whole where the program chooses it
+// (RunOptions::detMPs; program/cli.cpp), with no equation of its own: the
+// same addPoint for every point, the same sums in the same order. What it adds:
+//   runs of fewer than fastFrom points: detMPs itself;
+//   exp(2 eps_e,n) of every point once per load step (out.bEn, eq 9);
+//   node-blocked assembly (addNodeBlocks) where Kt's pattern allows it;
+//   a prefetch of the next points' memory;
+//   OpenMP threads (pointShares.h): thread t owns a range of nodes, their
+//   rows of fint and columns of Kt, and adds every point that links one of
+//   them in point order; a point in two ranges is computed by both, its
+//   state written by the owner of its first node: bit for bit the serial
+//   loop on any number of threads.
+// Inputs/outputs: those of detMPs; out.bEn, out.blocked kept for the step.
+// Tests:   tests/test_detMPs.cpp (against detMPs, bit for bit, 1-4 threads)
+//--------------------------------------------------------------------------
+#pragma once
+#include "ample/detMPs.h"
+
+namespace ample {
+
+constexpr int fastFrom = 2048;  // fewer points: detMPs, the core loop
+
+void detMPsFast(const Eigen::VectorXd& uvw, std::vector<MaterialPoint>& mpData, Formulation form,
+                DetMPsOut& out);
+
+// exp(2 eps_e,n) of every point (eq 9), once per load step
+std::vector<Matrix3d> elasticLeftCGs(const std::vector<MaterialPoint>& mpData);
+
+}  // namespace ample
