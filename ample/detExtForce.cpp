@@ -4,7 +4,7 @@
 // [AMPLE] eqs 27-28. See detExtForce.h for inputs and outputs.
 //--------------------------------------------------------------------------
 #include "detExtForce.h"
-#include "ample/classroom/exercise.h"
+#include "constitutive/exercise.h"
 
 namespace ample {
 

@@ -6,7 +6,7 @@
 #include "detFDoFs.h"
 #include "ample/basis/MPMbasis.h"
 #include "ample/basis/domainCorners.h"
-#include "ample/classroom/exercise.h"
+#include "constitutive/exercise.h"
 #include <algorithm>
 #include <array>
 #include <cmath>

@@ -9,7 +9,7 @@
 // ExerciseNotDone (exercise.h): a blanked region of the student copy was reached.
 //--------------------------------------------------------------------------
 #pragma once
-#include "ample/classroom/exercise.h"  // ExerciseNotDone: a blanked exercise of the student copy
+#include "constitutive/exercise.h"  // ExerciseNotDone: a blanked exercise of the student copy
 #include <stdexcept>
 #include <string>
 

@@ -4,7 +4,7 @@
 // [AMPLE] eqs 15, 33, 34. See updateMPs.h for inputs and outputs.
 //--------------------------------------------------------------------------
 #include "updateMPs.h"
-#include "ample/classroom/exercise.h"
+#include "constitutive/exercise.h"
 #include "ample/basis/updateDomain.h"
 
 namespace ample {

@@ -4,7 +4,7 @@
 // [AMPLE] eq 5. See Hooke3d.h for inputs and outputs.
 //--------------------------------------------------------------------------
 #include "Hooke3d.h"
-#include "ample/classroom/exercise.h"
+#include "exercise.h"
 
 namespace ample {
 

@@ -4,7 +4,7 @@
 // [AMPLE] eq 11. See VMconst.h for the algorithm, inputs and outputs.
 //--------------------------------------------------------------------------
 #include "VMconst.h"
-#include "ample/classroom/exercise.h"
+#include "exercise.h"
 #include <cmath>
 
 namespace ample {

@@ -2,7 +2,7 @@
 // main_tests — doctest main of the ample-cpp test suite (see tests/CMakeLists.txt)
 //--------------------------------------------------------------------------
 // The default reporter "exercises" is doctest's console reporter, except for a
-// blanked exercise of the student copy (ample/classroom/exercise.h, docs/exercises.md).
+// blanked exercise of the student copy (constitutive/exercise.h, docs/exercises.md).
 // A test case that reaches ExerciseNotDone("X: ...") prints ONE line and
 // nothing else of that test case:
 //   in the suite of an exercise S (the suites named like the exercises of the
@@ -19,7 +19,7 @@
 //--------------------------------------------------------------------------
 #define DOCTEST_CONFIG_IMPLEMENT
 #include <doctest/doctest.h>
-#include "ample/classroom/exercise.h"
+#include "constitutive/exercise.h"
 #include <cstdlib>
 #include <fstream>
 #include <set>

@@ -8,7 +8,7 @@
 # is an exercise (docs/exercises.md). The student copy has every region
 # replaced by the one line
 #     throw ExerciseNotDone("name: see docs/exercises.md#name");
-# (ample/classroom/exercise.h), keeps the two marker lines, and has a file STUDENT.md at
+# (constitutive/exercise.h), keeps the two marker lines, and has a file STUDENT.md at
 # its top (the list of exercises; its presence also quietens the unused-
 # parameter warnings of the stubs, CMakeLists.txt). The student writes the
 # answer between the markers.

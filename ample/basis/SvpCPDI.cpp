@@ -4,7 +4,7 @@
 // [CPDI] sec 2 (iv). See SvpCPDI.h for the formulas, inputs and outputs.
 //--------------------------------------------------------------------------
 #include "SvpCPDI.h"
-#include "ample/classroom/exercise.h"
+#include "constitutive/exercise.h"
 #include <cmath>
 
 namespace ample {

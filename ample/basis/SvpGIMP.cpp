@@ -4,7 +4,7 @@
 // [AMPLE] eqs 25-26. See SvpGIMP.h for the regions, inputs and outputs.
 //--------------------------------------------------------------------------
 #include "SvpGIMP.h"
-#include "ample/classroom/exercise.h"
+#include "constitutive/exercise.h"
 
 namespace ample {
 

@@ -4,7 +4,7 @@
 // [AMPLE] eqs 23-24. See SvpMPM.h for inputs and outputs.
 //--------------------------------------------------------------------------
 #include "SvpMPM.h"
-#include "ample/classroom/exercise.h"
+#include "constitutive/exercise.h"
 
 namespace ample {
 

@@ -4,7 +4,7 @@
 // See dirichletBand.h for inputs and outputs.
 //--------------------------------------------------------------------------
 #include "dirichletBand.h"
-#include "ample/classroom/exercise.h"
+#include "constitutive/exercise.h"
 #include <cassert>
 
 namespace ample {

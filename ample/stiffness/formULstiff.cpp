@@ -4,7 +4,7 @@
 // [Lagrangian] eqs A.1-A.2. See formULstiff.h for inputs and outputs.
 //--------------------------------------------------------------------------
 #include "formULstiff.h"
-#include "ample/classroom/exercise.h"
+#include "constitutive/exercise.h"
 #include <Eigen/Eigenvalues>
 #include <cmath>
 

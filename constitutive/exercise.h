@@ -11,6 +11,8 @@
 // with "needs exercise name". The full tree never throws it.
 // Inputs:  what = "name: see docs/exercises.md#name"
 // Outputs: exercise() = name
+// It lives in constitutive/, the bottom of the tree, so that the material models
+// (whose exercises throw it too) include nothing of ample/.
 // Tests:   tests/test_exercises.cpp
 //--------------------------------------------------------------------------
 #pragma once
