@@ -113,7 +113,7 @@ void solve(Analysis& an, RunLog& log, const RunOptions& opt) {
   for (Increment inc; loadSteps.next(inc);) {                        // load steps
     const int lstp = inc.lstp;
     if (inc.first) startStep(an, lstp, log, opt.quiet);              // progress, setup's hook
-    timed(T.elemMPinfo, elemMPinfo, mesh, mpData, an.fem);           // basis functions
+    timed(T.elemMPinfo, opt.basisLoop, mesh, mpData, an.fem);     // elemMPinfo: basis functions
     Eigen::VectorXd fext = timed(T.detExtForce, detExtForce, nDoF, an.g, mpData) * inc.lf1;
     if (an.bodyForce) fext += timed(T.detExtForce, detBodyForce, nDoF, an.bodyForce, inc.lf1, mpData);
     const std::vector<BC> bc = scaled(mesh.bc, inc.bcScale(an.lstps));  // increments of this step

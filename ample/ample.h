@@ -16,6 +16,7 @@
 #pragma once
 #include "analysis.h"
 #include "detMPs.h"
+#include "elemMPinfo.h"
 #include "plotting/makeVtkWriter.h"
 #include "plotting/runLog.h"
 #include "setups/setups.h"
@@ -33,8 +34,10 @@ struct RunOptions {
                               // does not move (--vtk-grid every; postPro.h)
   bool acceptFloor = false;  // accept a step whose residual stalled at its round-off floor
                              // (--accept-floor; checkConverged, ample/solver/roundOffFloor.h)
-  PointLoop pointLoop = detMPs;  // the point loop: detMPs, or the program's choice for large
-                                 // runs (detMPsFast, ample/fast/: the same numbers, faster)
+  // the loops over points: the core's, or the program's choice for large runs
+  // (ample/fast/: elemMPinfoFast, detMPsFast; the same numbers, faster)
+  BasisLoop basisLoop = elemMPinfo;
+  PointLoop pointLoop = detMPs;
 };
 
 int ample(const Setup& setup, const Params& P, const RunOptions& opt);

@@ -7,7 +7,7 @@
 #include "detMPs.h"
 #include "constitutive/Hooke3d.h"
 #include "constitutive/VMconst.h"
-#include "ample/classroom/exercise.h"
+#include "constitutive/exercise.h"
 #include "ample/stiffness/formPCstiff.h"
 #include "ample/stiffness/formULstiff.h"
 #include "ample/solver/stiffnessPattern.h"

@@ -12,9 +12,7 @@
 #include "errors.h"
 #include "ample/basis/domainCorners.h"
 #include "ample/basis/nodesForMP.h"
-#include "ample/solver/pointShares.h"
 #include <algorithm>
-#include <functional>
 
 namespace ample {
 
@@ -100,35 +98,38 @@ static void meshCells(const Mesh& mesh, MaterialPoint& mp, size_t p, bool keepCe
   }
 }
 
-// work(p) for every point p, shared out over the threads of pointShares.h
-static void forEachPoint(int np, const std::function<void(int p)>& work) {
-  forPointShares(np, pointThreads(np), [&](int, int begin, int end) {
-    for (int p = begin; p < end; ++p) work(p);
-  });
+// pass 1 for point p: its cells (the grid's or a general mesh's) and how many nodes they have
+int pointCells(const Mesh& mesh, MaterialPoint& mp, size_t p, bool keepCells) {
+  if (mesh.regular()) gridCells(mesh, mp, p, keepCells);
+  else meshCells(mesh, mp, p, keepCells);
+  std::array<int, MAXN> nodes;
+  return nodesForMP(mesh, mp.eIN, mp.ne, nodes.data());
+}
+
+// pass 3 for a point with its slice of the arena: its nodes, S_vp and dS_vp
+void pointBasis(const Mesh& mesh, MaterialPoint& mp) {
+  nodesForMP(mesh, mp.eIN, mp.ne, mp.nIN.data());
+  if (mesh.regular()) MPMbasis(mesh, mp);
+  else meshMPMbasis(mesh, mp);
+  dropNullNodes(mp);
+}
+
+// the active cells: those holding points (detFDoFs)
+void markActiveCells(Mesh& mesh, const std::vector<MaterialPoint>& mpData) {
+  mesh.eInA.assign(mesh.nels(), 0);
+  for (const MaterialPoint& mp : mpData)
+    for (int e = 0; e < mp.ne; ++e) mesh.eInA[mp.eIN[e]] = 1;
 }
 
 void elemMPinfo(Mesh& mesh, std::vector<MaterialPoint>& mpData, bool keepCells) {
-  const bool grid = mesh.regular();             // the one choice: the grid's path or a mesh's
-  if (!grid) buildCellSearch(mesh);             // a setup may have moved the mesh's nodes
-  const auto cellsOf = grid ? gridCells : meshCells;
-  const auto basisOf = grid ? MPMbasis : meshMPMbasis;
-  const int np = int(mpData.size());
-  std::vector<int> nn(np);                      // 1: each point's cells and how many nodes
-  forEachPoint(np, [&](int p) {
-    cellsOf(mesh, mpData[p], p, keepCells);
-    std::array<int, MAXN> nodes;
-    nn[p] = nodesForMP(mesh, mpData[p].eIN, mpData[p].ne, nodes.data());
-  });
+  if (!mesh.regular()) buildCellSearch(mesh);   // a setup may have moved the mesh's nodes
+  std::vector<int> nn(mpData.size());
+  for (size_t p = 0; p < mpData.size(); ++p)    // 1: each point's cells and how many nodes
+    nn[p] = pointCells(mesh, mpData[p], p, keepCells);
   roomForBasis(mpData, nn);                     // 2: a slice of the arena each, nn set
-  forEachPoint(np, [&](int p) {                 // 3: the nodes, S_vp and dS_vp into it
-    MaterialPoint& mp = mpData[p];
-    nodesForMP(mesh, mp.eIN, mp.ne, mp.nIN.data());
-    basisOf(mesh, mp);
-    dropNullNodes(mp);
-  });
-  mesh.eInA.assign(mesh.nels(), 0);             // the active cells: those holding points
-  for (const MaterialPoint& mp : mpData)
-    for (int e = 0; e < mp.ne; ++e) mesh.eInA[mp.eIN[e]] = 1;
+  for (MaterialPoint& mp : mpData)              // 3: the nodes, S_vp and dS_vp into it
+    pointBasis(mesh, mp);
+  markActiveCells(mesh, mpData);
 }
 
 }  // namespace ample

@@ -51,26 +51,11 @@ void prefetchAhead(const std::vector<MaterialPoint>& mpData, int p, int end) {
 #endif
 }
 
-// the point loop of detMPs on nt threads, each owning a range of nodes: thread t adds
-// the f_p and k_p of every point that links one of its nodes, in point order, into its
-// rows of fint and its columns of Kt. Each entry then gets the same terms in the same
-// order as in the serial loop: the same numbers bit for bit, for any number of threads.
-// A point whose nodes lie in two ranges is computed by both: its state (F, sig, epsE) is
-// written by the owner of its first node, the other works on a copy taken before any
-// point is computed. The ranges are cut so that each thread owns the first nodes of about
-// np / nt points.
-void detMPsOnThreads(const Eigen::VectorXd& uvw, std::vector<MaterialPoint>& mpData, Formulation form,
-                     int nt, DetMPsOut& out) {
-  const int np = int(mpData.size()), nodes = int(uvw.size()) / nD;
-  auto firstNode = [&](int p) { return mpData[p].nn > 0 ? mpData[p].nIN[0] : 0; };
-  std::vector<int> cut(nt + 1, nodes);                          // thread t owns [cut[t], cut[t+1])
-  std::vector<int> first(nodes + 1, 0);                         // points by their first node
-  for (int p = 0; p < np; ++p) first[firstNode(p) + 1]++;
-  cut[0] = 0;
-  for (int n = 0, seen = 0, t = 1; n < nodes && t < nt; ++n) {
-    seen += first[n + 1];
-    while (t < nt && long(seen) * nt >= long(np) * t) cut[t++] = n + 1;
-  }
+}  // namespace
+
+struct ThreadShares {                                           // the threads' points, for a load step
+  int np = 0, nt = 0;
+  std::vector<int> cut;                                         // thread t owns nodes [cut[t], cut[t+1])
   struct Share {
     std::vector<int> points;                                    // those linking its nodes, in order
     std::vector<MaterialPoint> copies;                          // of those it does not own
@@ -78,26 +63,66 @@ void detMPsOnThreads(const Eigen::VectorXd& uvw, std::vector<MaterialPoint>& mpD
     int failedAt;                                               // the first point that threw
     std::exception_ptr failed;
   };
-  std::vector<Share> share(nt);
-  forPointShares(nt, nt, [&](int t, int, int) {                 // 1: the lists (mpData read only)
-    Share& s = share[t];
+  std::vector<Share> share;
+};
+
+namespace {
+
+// the threads' node ranges and their points, once per load step (the points link the same
+// nodes, and a copy's inputs, Fn, eps_e,n, the basis, do not change within a step)
+void shareOut(const std::vector<MaterialPoint>& mpData, int nodes, int nt, ThreadShares& S) {
+  const int np = int(mpData.size());
+  auto firstNode = [&](int p) { return mpData[p].nn > 0 ? mpData[p].nIN[0] : 0; };
+  S.np = np, S.nt = nt;
+  S.cut.assign(nt + 1, nodes);
+  std::vector<int> first(nodes + 1, 0);                         // points by their first node
+  for (int p = 0; p < np; ++p) first[firstNode(p) + 1]++;
+  S.cut[0] = 0;
+  for (int n = 0, seen = 0, t = 1; n < nodes && t < nt; ++n) {
+    seen += first[n + 1];
+    while (t < nt && long(seen) * nt >= long(np) * t) S.cut[t++] = n + 1;
+  }
+  S.share.assign(nt, {});
+  forPointShares(nt, nt, [&](int t, int, int) {                 // mpData read only
+    ThreadShares::Share& s = S.share[t];
+    s.points.reserve(np / nt + np / 16);
     for (int p = 0; p < np; ++p) {
       const MaterialPoint& mp = mpData[p];
       const int* nIN = mp.nIN.data();
-      const bool owner = firstNode(p) >= cut[t] && firstNode(p) < cut[t + 1];
-      const bool links = mp.nn > 0 && nIN[mp.nn - 1] >= cut[t] && nIN[0] < cut[t + 1] &&
-                         *std::lower_bound(nIN, nIN + mp.nn, cut[t]) < cut[t + 1];
+      const bool owner = firstNode(p) >= S.cut[t] && firstNode(p) < S.cut[t + 1];
+      const bool links = mp.nn > 0 && nIN[mp.nn - 1] >= S.cut[t] && nIN[0] < S.cut[t + 1] &&
+                         *std::lower_bound(nIN, nIN + mp.nn, S.cut[t]) < S.cut[t + 1];
       if (!owner && !links) continue;
       s.points.push_back(owner ? p : -1 - p);                   // -1 - p: work on a copy
       if (!owner) s.copies.push_back(mp);
     }
   });
+}
+
+// the point loop of detMPs on nt threads, each owning a range of nodes: thread t adds
+// the f_p and k_p of every point that links one of its nodes, in point order, into its
+// rows of fint and its columns of Kt. Each entry then gets the same terms in the same
+// order as in the serial loop: the same numbers bit for bit, for any number of threads.
+// A point whose nodes lie in two ranges is computed by both: its state (F, sig, epsE) is
+// written by the owner of its first node, the other works on a copy taken at the start
+// of the step. The ranges are cut so that each thread owns the first nodes of about
+// np / nt points.
+void detMPsOnThreads(const Eigen::VectorXd& uvw, std::vector<MaterialPoint>& mpData, Formulation form,
+                     int nt, DetMPsOut& out) {
+  const int np = int(mpData.size());
+  if (!out.shares || out.shares->np != np || out.shares->nt != nt) {
+    out.shares = std::make_shared<ThreadShares>();
+    shareOut(mpData, int(uvw.size()) / nD, nt, *out.shares);
+  }
+  const std::vector<int>& cut = out.shares->cut;
+  std::vector<ThreadShares::Share>& share = out.shares->share;
   static const Matrix3d none = Matrix3d::Identity();
-  forPointShares(nt, nt, [&](int t, int, int) {                 // 2: the points
-    Share& s = share[t];
+  forPointShares(nt, nt, [&](int t, int, int) {                 // the points
+    ThreadShares::Share& s = share[t];
     const int n0 = cut[t], n1 = cut[t + 1];
     s.fint.setZero(uvw.size());
     s.failedAt = np;
+    s.failed = nullptr;
     PointStiffness ke;
     for (size_t k = 0, c = 0; k < s.points.size(); ++k) {
       const int p = s.points[k] >= 0 ? s.points[k] : -1 - s.points[k];

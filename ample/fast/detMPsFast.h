@@ -18,10 +18,9 @@
 //--------------------------------------------------------------------------
 #pragma once
 #include "ample/detMPs.h"
+#include "fastFrom.h"
 
 namespace ample {
-
-constexpr int fastFrom = 2048;  // fewer points: detMPs, the core loop
 
 void detMPsFast(const Eigen::VectorXd& uvw, std::vector<MaterialPoint>& mpData, Formulation form,
                 DetMPsOut& out);

@@ -4,6 +4,7 @@
 // See cli.h for the grammar, inputs and outputs.
 //--------------------------------------------------------------------------
 #include "ample/fast/detMPsFast.h"
+#include "ample/fast/elemMPinfoFast.h"
 #include "cli.h"
 #include "ample/errors.h"
 #include <cctype>
@@ -192,7 +193,8 @@ CliRequest parseArgs(const std::vector<std::string>& args) {
   req.mode = CliMode::Run;
   req.params = req.setup->params();
   req.options.outDir = "output/" + args[0];
-  req.options.pointLoop = detMPsFast;                    // large runs: the same numbers, faster
+  req.options.basisLoop = elemMPinfoFast;                // large runs: the same numbers, faster
+  req.options.pointLoop = detMPsFast;
   std::set<std::string> options;
   std::map<std::string, std::string> params;
   for (size_t i = 1; i < args.size(); ++i) {
