@@ -160,7 +160,7 @@ std::vector<Matrix3d> elasticLeftCGs(const std::vector<MaterialPoint>& mpData) {
 void detMPsFast(const Eigen::VectorXd& uvw, std::vector<MaterialPoint>& mpData, Formulation form,
                 DetMPsOut& out) {
   const int nDoF = int(uvw.size()), np = int(mpData.size());
-  if (np < fastFrom) return detMPs(uvw, mpData, form, out);    // small: the core loop
+  if (np < fastFrom()) return detMPs(uvw, mpData, form, out);  // small: the core loop
   if (out.Kt.rows() != nDoF || out.Kt.nonZeros() == 0) out.Kt = stiffnessPattern(nDoF, mpData);
   if (form != Formulation::SS && int(out.bEn.size()) != np) out.bEn = elasticLeftCGs(mpData);
   if (out.blockedNnz != out.Kt.nonZeros()) {                    // a new pattern (or one grown by

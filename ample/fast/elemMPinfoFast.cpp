@@ -11,7 +11,7 @@ namespace ample {
 
 void elemMPinfoFast(Mesh& mesh, std::vector<MaterialPoint>& mpData, bool keepCells) {
   const int np = int(mpData.size()), nt = pointThreads(np);
-  if (np < fastFrom) return elemMPinfo(mesh, mpData, keepCells);  // small: the core's
+  if (np < fastFrom()) return elemMPinfo(mesh, mpData, keepCells);  // small: the core's
   if (!mesh.regular()) buildCellSearch(mesh);
   std::vector<int> nn(np);
   forPointShares(np, nt, [&](int, int begin, int end) {         // 1
