@@ -116,15 +116,16 @@ TEST_SUITE("detMPs") {
 }
 
 TEST_SUITE("detMPs") {
-  // 4,096 GIMP points (16 x 16 cells, 4 x 4 each), plastic, prestrained: two threads' shares
-  Analysis largeBlock() {
+  // 16 cells^2 GIMP points (cells x cells, 4 x 4 each, a margin of 2 cells), plastic,
+  // prestrained: 4,096 points for cells = 16, two threads' shares
+  Analysis largeBlock(int cells = 16) {
     Params P = commonParams(1);
     for (auto kv : std::vector<std::pair<const char*, double>>{
              {"mp", 4}, {"mpType", 2}, {"cmType", 2}, {"E", 1e6}, {"nu", 0.3}, {"rhoY", 2e3}})
       setDefault(P, kv.first, kv.second);
     Analysis an;
-    an.mesh = formCoord2D(20, 20, 20.0, 20.0);
-    fillBlock(an.mpData, Vector2d(2, 2), 16, 16, an.mesh.h, P, 1000.0);
+    an.mesh = formCoord2D(cells + 4, cells + 4, cells + 4.0, cells + 4.0);
+    fillBlock(an.mpData, Vector2d(2, 2), cells, cells, an.mesh.h, P, 1000.0);
     testing::prestrain(an.mpData, 3);
     elemMPinfo(an.mesh, an.mpData);
     return an;
@@ -134,16 +135,7 @@ TEST_SUITE("detMPs") {
 #ifndef _OPENMP
     MESSAGE("built without AMPLE_OPENMP: the point loop is serial, nothing to compare");
 #else
-    // 16,384 points (32 x 32 cells of 4 x 4): up to 8 threads' worth at 2,048 a thread
-    Params P = commonParams(1);
-    for (auto kv : std::vector<std::pair<const char*, double>>{
-             {"mp", 4}, {"mpType", 2}, {"cmType", 2}, {"E", 1e6}, {"nu", 0.3}, {"rhoY", 2e3}})
-      setDefault(P, kv.first, kv.second);
-    Analysis an;
-    an.mesh = formCoord2D(36, 36, 36.0, 36.0);
-    fillBlock(an.mpData, Vector2d(2, 2), 32, 32, an.mesh.h, P, 1000.0);
-    testing::prestrain(an.mpData, 3);
-    elemMPinfo(an.mesh, an.mpData);
+    Analysis an = largeBlock(32);                      // 16,384 points: up to 8 threads' worth
     REQUIRE(an.mpData.size() == 16384);
     const Eigen::VectorXd uvw = testing::randomUvw(an, 0.05, 5);
     const int before = omp_get_max_threads();
