@@ -116,12 +116,12 @@ TEST_SUITE("detMPs") {
 }
 
 TEST_SUITE("detMPs") {
-  // 16 cells^2 GIMP points (cells x cells, 4 x 4 each, a margin of 2 cells), plastic,
-  // prestrained: 4,096 points for cells = 16, two threads' shares
-  Analysis largeBlock(int cells = 16) {
+  // GIMP points, mp x mp in each of cells x cells (a margin of 2 cells), plastic,
+  // prestrained: 4,096 points for cells = 16, mp = 4, two threads' shares
+  Analysis largeBlock(int cells = 16, int mp = 4) {
     Params P = commonParams(1);
     for (auto kv : std::vector<std::pair<const char*, double>>{
-             {"mp", 4}, {"mpType", 2}, {"cmType", 2}, {"E", 1e6}, {"nu", 0.3}, {"rhoY", 2e3}})
+             {"mp", mp}, {"mpType", 2}, {"cmType", 2}, {"E", 1e6}, {"nu", 0.3}, {"rhoY", 2e3}})
       setDefault(P, kv.first, kv.second);
     Analysis an;
     an.mesh = formCoord2D(cells + 4, cells + 4, cells + 4.0, cells + 4.0);
@@ -135,31 +135,36 @@ TEST_SUITE("detMPs") {
 #ifndef _OPENMP
     MESSAGE("built without AMPLE_OPENMP: the point loop is serial, nothing to compare");
 #else
-    Analysis an = largeBlock(32);                      // 16,384 points: up to 8 threads' worth
-    REQUIRE(an.mpData.size() == 16384);
-    const Eigen::VectorXd uvw = testing::randomUvw(an, 0.05, 5);
-    const int before = omp_get_max_threads();
-    for (Formulation form : {Formulation::UL, Formulation::PC}) {
-      std::vector<DetMPsOut> out(5);                     // 0: detMPs, nt: detMPsFast on nt threads
-      std::vector<std::vector<MaterialPoint>> mps(5, an.mpData);
-      detMPs(uvw, mps[0], form, out[0]);
-      for (int nt = 1; nt <= 4; ++nt) {
-        omp_set_num_threads(nt);
-        REQUIRE(pointThreads(int(an.mpData.size())) == std::min(nt, 16384 / pointsPerThread()));
-        detMPsFast(uvw, mps[nt], form, out[nt]);
-      }
-      omp_set_num_threads(before);
-      CHECK(out[1].blocked);                             // the fast assembly did run
-      CHECK(out[0].Kt.norm() > 0);
-      for (int nt = 1; nt <= 4; ++nt) {
-        CAPTURE(nt);
-        CHECK((out[nt].fint.array() == out[0].fint.array()).all());
-        CHECK((out[nt].Kt.coeffs() == out[0].Kt.coeffs()).all());
-        bool same = true;
-        for (size_t p = 0; p < mps[0].size(); ++p)
-          same = same && mps[nt][p].sig == mps[0][p].sig && mps[nt][p].F == mps[0][p].F &&
-                 mps[nt][p].epsE == mps[0][p].epsE;
-        CHECK(same);
+    // 16,384 points in 32 x 32 cells; and 9,216 crowded into 4 x 4 cells (24 x 24 each), where
+    // a thread owns a few nodes and most points link two threads' nodes
+    for (const Analysis& an : {largeBlock(32), largeBlock(4, 24)}) {
+      const int np = int(an.mpData.size());
+      CAPTURE(np);
+      REQUIRE(np >= 4 * pointsPerThread());
+      const Eigen::VectorXd uvw = testing::randomUvw(an, 0.05, 5);
+      const int before = omp_get_max_threads();
+      for (Formulation form : {Formulation::UL, Formulation::PC}) {
+        std::vector<DetMPsOut> out(5);                     // 0: detMPs, nt: detMPsFast on nt threads
+        std::vector<std::vector<MaterialPoint>> mps(5, an.mpData);
+        detMPs(uvw, mps[0], form, out[0]);
+        for (int nt = 1; nt <= 4; ++nt) {
+          omp_set_num_threads(nt);
+          REQUIRE(pointThreads(int(an.mpData.size())) == std::min(nt, np / pointsPerThread()));
+          detMPsFast(uvw, mps[nt], form, out[nt]);
+        }
+        omp_set_num_threads(before);
+        CHECK(out[1].blocked);                             // the fast assembly did run
+        CHECK(out[0].Kt.norm() > 0);
+        for (int nt = 1; nt <= 4; ++nt) {
+          CAPTURE(nt);
+          CHECK((out[nt].fint.array() == out[0].fint.array()).all());
+          CHECK((out[nt].Kt.coeffs() == out[0].Kt.coeffs()).all());
+          bool same = true;
+          for (size_t p = 0; p < mps[0].size(); ++p)
+            same = same && mps[nt][p].sig == mps[0][p].sig && mps[nt][p].F == mps[0][p].F &&
+                   mps[nt][p].epsE == mps[0][p].epsE;
+          CHECK(same);
+        }
       }
     }
 #endif
