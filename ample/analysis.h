@@ -37,7 +37,7 @@ struct Analysis {
                                       // point that leaves the grid: what to try; "" none)
   double ghost = 0;                   // ghost-penalty factor of the edge cells (0: none)
   double split = 0;                   // split GIMP points with lp(i) > split h(i) after a step (0: none)
-  bool lone = true;                   // leave redundant lone-node dofs out of fd (detFDoFs)
+  bool lone = true;                   // leave redundant lone-node dofs out of fd (detFDoFsLone)
   int ghostFrom = 0;                  // first load step the penalty was needed (0: not yet)
   Formulation formulation = Formulation::UL;        // frame of equilibrium ([Lagrangian])
   DomainUpdate domainUpdate = DomainUpdate::Uii;    // GIMP domain update ([AMPLE] eq 34)

@@ -10,7 +10,6 @@
 #include "constitutive/exercise.h"
 #include "ample/stiffness/formPCstiff.h"
 #include "ample/stiffness/formULstiff.h"
-#include "ample/solver/stiffnessPattern.h"
 #include "ample/stiffness/tensorOps.h"
 
 namespace ample {
@@ -148,27 +147,28 @@ Matrix3d elasticLeftCG(const MaterialPoint& mp) {
   return symExp(2.0 * strainToTensor(mp.epsEn));
 }
 
-// k_p into the values of Kt's pattern (eq 30)
-void assemble(const MaterialPoint& mp, const PointStiffness& ke, SpMat& Kt) {
-  int d[nD * MAXN];                                             // the point's dofs, ascending
+// k_p as entries (row, column, value) of Kt (eq 30), appended to Kt's list
+void assemble(const MaterialPoint& mp, const PointStiffness& ke, std::vector<Eigen::Triplet<double>>& Kt) {
+  int d[nD * MAXN];                                             // the point's dofs
   for (int a = 0; a < mp.nn; ++a)
     for (int i = 0; i < nD; ++i) d[nD * a + i] = dof(mp.nIN[a], i);
-  const int ne = nD * mp.nn;
-  addToPattern(Kt, Kt.valuePtr(), d, ne, ke.topLeftCorner(ne, ne));
+  for (int c = 0; c < nD * mp.nn; ++c)
+    for (int r = 0; r < nD * mp.nn; ++r) Kt.emplace_back(d[r], d[c], ke(r, c));
 }
 
 void detMPs(const Eigen::VectorXd& uvw, std::vector<MaterialPoint>& mpData, Formulation form,
             DetMPsOut& out) {
   const int nDoF = int(uvw.size());
-  if (out.Kt.rows() != nDoF || out.Kt.nonZeros() == 0) out.Kt = stiffnessPattern(nDoF, mpData);
   out.fint.setZero(nDoF);
-  out.Kt.coeffs().setZero();                                    // the pattern's values only
+  std::vector<Eigen::Triplet<double>> Kt;                       // the points' k_p entries
   PointStiffness ke;                                            // k_p (eq 14)
   for (size_t p = 0; p < mpData.size(); ++p) {                  // the point loop
     MaterialPoint& mp = mpData[p];                              // the point (gdb: p mp)
     addPoint(uvw, elasticLeftCG(mp), form, mp, out.fint, ke);   // f_p into fint, k_p (eqs 14, 16)
-    assemble(mp, ke, out.Kt);                                   // eq 30
+    assemble(mp, ke, Kt);                                       // eq 30
   }
+  out.Kt.resize(nDoF, nDoF);
+  out.Kt.setFromTriplets(Kt.begin(), Kt.end());                 // each entry summed in point order
 }
 
 DetMPsOut detMPs(const Eigen::VectorXd& uvw, std::vector<MaterialPoint>& mpData, Formulation form) {

@@ -6,13 +6,12 @@
 // from Hooke3d / VMconst (eqs 5, 11), sigma = tau / det F (eq 6); k_p, f_p (eqs 14-18);
 // then Kt = A k_p, fint = A f_p (eqs 30-31). form = PC: [Lagrangian] eqs 18-23;
 // form = SS: small strain, [Boundaries] eqs 2-3, 6, 8-10 (docs/algorithm.md).
-// Inputs:  uvw (nDoF) the step's displacement increment · mpData · form ·
-//          out.Kt with the step's pattern (stiffnessPattern; empty: made here)
-// Outputs: out.fint (nDoF) · out.Kt's values · mpData (F, sig, epsE)
+// Inputs:  uvw (nDoF) the step's displacement increment · mpData · form
+// Outputs: out.fint (nDoF) · out.Kt (nDoF x nDoF) · mpData (F, sig, epsE)
 // Tests:   tests/test_detMPs.cpp, tests/test_formULstiff.cpp, tests/test_smallStrain.cpp
 //--------------------------------------------------------------------------
 #pragma once
-#include "ample/solver/stiffnessPattern.h"
+#include <Eigen/SparseCore>
 #include "mpData.h"
 #include <memory>
 
@@ -45,7 +44,7 @@ Matrix3d elasticLeftCG(const MaterialPoint& mp);
 // the point's state (F, sigma, eps_e) from uvw; f_p added into fint; k_p into ke (eqs 5-18, 14, 16)
 void addPoint(const Eigen::VectorXd& uvw, const Matrix3d& bEn, Formulation form, MaterialPoint& mp,
               Eigen::VectorXd& fint, PointStiffness& ke);
-// k_p into the values of Kt's pattern (eq 30)
-void assemble(const MaterialPoint& mp, const PointStiffness& ke, SpMat& Kt);
+// k_p as entries (row, column, value) of Kt (eq 30), appended to Kt's list
+void assemble(const MaterialPoint& mp, const PointStiffness& ke, std::vector<Eigen::Triplet<double>>& Kt);
 
 }  // namespace ample

@@ -5,186 +5,57 @@
 //--------------------------------------------------------------------------
 #include "linSolve.h"
 #include "errors.h"
-#include "solver/krylov.h"
-#include <algorithm>
-#include <cmath>
-#include <cstdio>
+#include "constitutive/exercise.h"
+#include <Eigen/SparseLU>
+#include <string>
 
 namespace ample {
 
-// Kt(fd,fd) symmetric to 1e-12 of its largest entry: each entry below the diagonal against
-// its mirror, found in the mirror's column by bisection (no transposed copy), or 0 without
-// one; every entry above the diagonal must be such a mirror, else it is compared with 0 too
-// (all entries). A guard of cost only: the backward error below refuses the solve of an
-// unsymmetric K too (LDL^T reads one triangle), after a wasted factorisation. The columns on
-// the threads there are (the same answer on any number)
-static bool symmetric(const SpMat& K, bool allEntries = false) {
-  if (K.nonZeros() == 0) return true;
-  const double tol = 1e-12 * K.coeffs().cwiseAbs().maxCoeff();
-  const int *outer = K.outerIndexPtr(), *inner = K.innerIndexPtr();
-  const double* val = K.valuePtr();
-  long above = 0, mirrored = 0, unequal = 0;
-#ifdef _OPENMP
-#pragma omp parallel for reduction(+ : above, mirrored, unequal) schedule(static)
-#endif
-  for (int c = 0; c < K.outerSize(); ++c)
-    for (int e = outer[c]; e < outer[c + 1]; ++e) {
-      const int r = inner[e];
-      if (r < c) above++;
-      if (r <= c && !allEntries) continue;
-      const int* m = std::lower_bound(inner + outer[r], inner + outer[r + 1], c);
-      const bool found = m != inner + outer[r + 1] && *m == c;
-      mirrored += found && r > c;
-      unequal += std::abs(val[e] - (found ? val[m - inner] : 0.0)) > tol;
-    }
-  if (unequal > 0) return false;
-  return allEntries || mirrored == above || symmetric(K, true);
-}
-
-// normwise backward error of x for K x = b: ||K x - b|| / (||K|| ||x|| + ||b||), infinity norms
-// (the relative change of K and b that x solves exactly; round-off gives ~1e-16 whatever
-// the condition of K, an unstable factorisation much more): krylov.cpp
-static double backwardError(const SpMat& K, const Eigen::VectorXd& x, const Eigen::VectorXd& b) {
-  return backwardError(K, infNorm(K), x, b);
-}
-
-// a symmetric solver (LDLT, LDLT_METIS, CHOLMOD, LDLT_HALVES) factorises K (no pivoting) and solves;
-// false when it fails (an indefinite K for LL^T) or its backward error exceeds 1e-12
-// (a relative residual would refuse the ill-conditioned column of 2^14 cells: 1e-9..2e-8
-// there with a backward error of 1e-16)
-template <class SymmetricSolver>
-static bool symmetricSolve(SymmetricSolver& s, const SpMat& K, const Eigen::VectorXd& rhs, Eigen::VectorXd& x,
-                           long& factorisations) {
-  s.factorize(K);
-  factorisations++;
-  if (s.info() != Eigen::Success) return false;
-  x = s.solve(rhs);
-  return x.allFinite() && backwardError(K, x, rhs) <= 1e-12;  // (Eigen's max norms skip NaN)
-}
-
-// the chosen symmetric solver on S.Kff; false for LU and UMFPACK
-static bool chosenSymmetricSolve(FreeSystem& S, const Eigen::VectorXd& rhs, Eigen::VectorXd& x) {
-  switch (S.choice) {
-    case LinearSolver::LDLT: return symmetricSolve(S.ldlt, S.Kff, rhs, x, S.factorisations);
-    case LinearSolver::LDLT_HALVES: return symmetricSolve(S.halves, S.Kff, rhs, x, S.factorisations);
-#ifdef AMPLE_HAVE_METIS
-    case LinearSolver::LDLT_METIS: return symmetricSolve(S.ldltMetis, S.Kff, rhs, x, S.factorisations);
-#endif
-#ifdef AMPLE_HAVE_SUITESPARSE
-    case LinearSolver::CHOLMOD: return symmetricSolve(S.cholmod, S.Kff, rhs, x, S.factorisations);
-#endif
-    default: return false;
-  }
-}
-
-// SparseLU's numeric factorisation of S.Kff and the solve; RunError when it fails
-static Eigen::VectorXd luSolve(FreeSystem& S, const Eigen::VectorXd& rhs) {
-  if (!S.luAnalysed) S.lu.analyzePattern(S.Kff);        // once per pattern
-  S.luAnalysed = true;
-  S.lu.factorize(S.Kff);                                // numeric factorisation only
-  S.factorisations++;
-  if (S.lu.info() != Eigen::Success)
-    throw RunError("SparseLU could not factorise the stiffness Kt(fd,fd) (" + S.lu.lastErrorMessage() +
-                   "): the problem is singular, e.g. a rigid-body mode without enough boundary conditions "
-                   "or a nearly empty cell", Failure::Singular);
-  return S.lu.solve(rhs);
-}
-
-// solver=KRYLOV (freeSystem.h): a pass after the first of a load step (NRit > 1) with a factor
-// held is solved by PCG (factor and Kff symmetric) or GMRES preconditioned with that factor,
-// from x = 0 to a backward error of 1e-14; one that reaches 1e-12 within krylovMaxIt
-// iterations and leaves a residual of at most 1e-3 of the right-hand side (the test linSolve
-// applies to every solve: where Kt(fd,fd) is nearly singular x is huge, and a backward error
-// of 1e-12 need not mean that) is accepted. Otherwise (or at NRit == 1, or when the last Krylov solve with this
-// factor needed more than half of krylovMaxIt: the factor has drifted too far to pay) Kff is
-// factorised, LDLT when symmetric and its solve is accepted, else SparseLU, solved directly,
-// and the factor kept for the step
-static Eigen::VectorXd krylovSolve(FreeSystem& S, const Eigen::VectorXd& rhs, int NRit) {
-  using Eigen::VectorXd;
-  if (NRit > 1 && S.factorHeld && 2 * S.krylovLastIterations <= S.krylovMaxIt) {
-    VectorXd x = VectorXd::Zero(rhs.size());
-    KrylovResult k;
-    const Preconditioner byLDLT = [&S](const VectorXd& r) { return VectorXd(S.ldlt.solve(r)); };
-    const Preconditioner byLU = [&S](const VectorXd& r) { return VectorXd(S.lu.solve(r)); };
-    if (S.factorSymmetric && symmetric(S.Kff)) k = pcg(S.Kff, byLDLT, rhs, x, S.krylovMaxIt, 1e-14);
-    else k = gmres(S.Kff, S.factorSymmetric ? byLDLT : byLU, rhs, x, S.krylovMaxIt, 1e-14);
-    S.krylovSolves++;
-    S.krylovIterations += k.iterations;
-    S.krylovLastIterations = k.iterations;
-    if (x.allFinite() && k.backwardError <= 1e-12 && (S.Kff * x - rhs).norm() <= 1e-3 * rhs.norm()) return x;
-  }
-  S.factorHeld = false;
-  S.krylovLastIterations = 0;                           // a new factor: none yet
-  VectorXd x;
-  if (symmetric(S.Kff) && symmetricSolve(S.ldlt, S.Kff, rhs, x, S.factorisations)) {
-    S.factorSymmetric = S.factorHeld = true;
-    return x;
-  }
-  x = luSolve(S, rhs);
-  S.factorSymmetric = false;
-  S.factorHeld = true;
-  return x;
-}
-
-// numeric factorisation of S.Kff and the solve: SparseLU (solver=LU), UMFPACK, or a symmetric
-// solver when Kff is symmetric and its solve succeeds (else SparseLU); RunError when LU fails
-static Eigen::VectorXd factorisedSolve(FreeSystem& S, const Eigen::VectorXd& rhs, int NRit) {
-  if (S.choice == LinearSolver::KRYLOV) return krylovSolve(S, rhs, NRit);
-  const std::string singular = "): the problem is singular, e.g. a rigid-body mode without enough "
-                               "boundary conditions or a nearly empty cell";
-#ifdef AMPLE_HAVE_SUITESPARSE
-  if (S.choice == LinearSolver::UMFPACK) {
-    S.umfpack.factorize(S.Kff);                         // numeric factorisation only
-    S.factorisations++;
-    if (S.umfpack.info() != Eigen::Success)
-      throw RunError("UMFPACK could not factorise the stiffness Kt(fd,fd) (status " +
-                     std::to_string(S.umfpack.umfpackFactorizeReturncode()) + singular, Failure::Singular);
-    return S.umfpack.solve(rhs);
-  }
-#endif
-  if (S.choice != LinearSolver::LU) {                   // LDLT, LDLT_METIS, CHOLMOD, LDLT_HALVES
-    Eigen::VectorXd x;
-    if (symmetric(S.Kff) && chosenSymmetricSolve(S, rhs, x)) return x;
-    if (S.fallbacks++ == 0)                             // said at the run's end (ample: RunLog::notes)
-      S.notes += "ample: solver=" + solverNames()[size_t(S.choice)] + ": Kt(fd,fd) not symmetric to 1e-12, or "
-                 "its factorisation failed or was inexact: SparseLU solves such passes\n";
-  }
-  return luSolve(S, rhs);
-}
+static SpMat freeBlock(const SpMat& Kt, const std::vector<int>& fd);
 
 LinSolveOut linSolve(const std::vector<BC>& bc, const SpMat& Kt, const Eigen::VectorXd& oobf,
-                     int NRit, const std::vector<int>& fd, FreeSystem* cache) {
+                     int NRit, const std::vector<int>& fd) {
   // BEGIN EXERCISE linSolve
   const int nDoF = int(oobf.size()), nfd = int(fd.size());
   LinSolveOut out{Eigen::VectorXd::Zero(nDoF), Eigen::VectorXd::Zero(nDoF)};
-  if (NRit == 0) return out;  // first pass only builds Kt and fint
+  if (NRit == 0) return out;                            // first pass only builds Kt and fint
   if (NRit == 1)
-    for (const BC& c : bc) out.duvw(c.dof) = c.value;  // prescribed increments
-
+    for (const BC& c : bc) out.duvw(c.dof) = c.value;   // prescribed increments
   const Eigen::VectorXd Kd = Kt * out.duvw;             // Kt(:,bc) duvw(bc)
-  if (nfd == 0) {                                       // every active dof is prescribed
-    for (const BC& c : bc) out.drct(c.dof) = Kd(c.dof) - oobf(c.dof);
-    return out;
+  if (nfd > 0) {
+    const SpMat Kff = freeBlock(Kt, fd);                // Kt(fd,fd)
+    Eigen::VectorXd rhs(nfd);
+    for (int r = 0; r < nfd; ++r) rhs(r) = oobf(fd[r]) - Kd(fd[r]);
+    Eigen::SparseLU<SpMat, Eigen::COLAMDOrdering<int>> lu(Kff);
+    if (lu.info() != Eigen::Success)
+      throw RunError("SparseLU could not factorise the stiffness Kt(fd,fd) (" + lu.lastErrorMessage() +
+                     "): the problem is singular, e.g. a rigid-body mode without enough boundary "
+                     "conditions or a nearly empty cell", Failure::Singular);
+    const Eigen::VectorXd x = lu.solve(rhs);
+    const double res = (Kff * x - rhs).norm(), scale = rhs.norm() + 1e-300;
+    if (!(res <= 1e-3 * scale))                         // a zero pivot: no solution exists
+      throw RunError("the stiffness Kt(fd,fd) is singular (linear solve residual " +
+                     std::to_string(res / scale) + " of the right-hand side): a rigid-body mode "
+                     "without enough boundary conditions, or a nearly empty cell", Failure::Singular);
+    for (int r = 0; r < nfd; ++r) out.duvw(fd[r]) = x(r);
   }
-  FreeSystem local;                                     // no cache given: build it here
-  FreeSystem& S = cache ? *cache : local;
-  refillFreeSystem(Kt, fd, S);                          // S.Kff = Kt(fd,fd) (fast part)
-
-  Eigen::VectorXd rhs(nfd);
-  for (int r = 0; r < nfd; ++r) rhs(r) = oobf(fd[r]) - Kd(fd[r]);
-
-  const Eigen::VectorXd x = factorisedSolve(S, rhs, NRit);
-  const double res = (S.Kff * x - rhs).norm(), scale = rhs.norm() + 1e-300;
-  if (!(res <= 1e-3 * scale))                           // a zero pivot: no solution exists
-    throw RunError("the stiffness Kt(fd,fd) is singular (linear solve residual " +
-                   std::to_string(res / scale) + " of the right-hand side): a rigid-body mode "
-                   "without enough boundary conditions, or a nearly empty cell", Failure::Singular);
-  for (int r = 0; r < nfd; ++r) out.duvw(fd[r]) = x(r);
-
   const Eigen::VectorXd Ku = Kt * out.duvw;
   for (const BC& c : bc) out.drct(c.dof) = Ku(c.dof) - oobf(c.dof);
   return out;
   // END EXERCISE
+}
+
+// Kt(fd,fd): the entries of Kt in free rows and columns, renumbered 0..nfd-1 (fd ascending)
+static SpMat freeBlock(const SpMat& Kt, const std::vector<int>& fd) {
+  std::vector<int> free(Kt.rows(), -1);                 // dof -> its row in Kt(fd,fd), or -1
+  for (size_t r = 0; r < fd.size(); ++r) free[fd[r]] = int(r);
+  std::vector<Eigen::Triplet<double>> entries;
+  for (int c : fd)
+    for (SpMat::InnerIterator it(Kt, c); it; ++it)
+      if (free[it.row()] >= 0) entries.emplace_back(free[it.row()], free[c], it.value());
+  SpMat Kff(int(fd.size()), int(fd.size()));
+  Kff.setFromTriplets(entries.begin(), entries.end());
+  return Kff;
 }
 
 }  // namespace ample

@@ -22,11 +22,14 @@
 #pragma once
 #include "basisArena.h"
 #include <Eigen/Dense>
+#include <Eigen/SparseCore>
 #include <array>
 #include <memory>
 #include <vector>
 
 namespace ample {
+
+using SpMat = Eigen::SparseMatrix<double>;  // column-major compressed sparse matrix (Kt)
 
 using Vector6d = Eigen::Matrix<double, 6, 1>;
 using Matrix6d = Eigen::Matrix<double, 6, 6>;

@@ -32,6 +32,7 @@
 //--------------------------------------------------------------------------
 #include "ample/detExtForce.h"
 #include "ample/detFDoFs.h"
+#include "ample/remedies/loneNodes.h"
 #include "ample/detMPs.h"
 #include "ample/elemMPinfo.h"
 #include "ample/errors.h"
@@ -106,7 +107,7 @@ static Eigen::VectorXd linearSolution(Analysis& an) {
   const int nDoF = an.mesh.nDoF();
   elemMPinfo(an.mesh, an.mpData);
   const Eigen::VectorXd fext = detExtForce(nDoF, an.g, an.mpData);
-  const std::vector<int> fd = detFDoFs(an.mesh, an.mpData);
+  const std::vector<int> fd = detFDoFsLone(an.mesh, an.mpData);
   const DetMPsOut mps = detMPs(Eigen::VectorXd::Zero(nDoF), an.mpData, Formulation::SS);
   return linSolve(an.mesh.bc, mps.Kt, fext, 1, fd).duvw;
 }

@@ -1,6 +1,6 @@
 // testProblems.h — small problems built in code for the tests (not a test file itself)
 #pragma once
-#include "ample/ample.h"
+#include "ample/program/run.h"
 #include "ample/detMPs.h"
 #include "ample/elemMPinfo.h"
 #include "ample/meshes/formCoord2D.h"
@@ -44,7 +44,7 @@ inline Analysis runSetup(const std::string& name,
   Params P = s->params();
   for (const auto& kv : set) setDefault(P, kv.first, kv.second);
   Analysis an = s->setupGrid(P);
-  solve(an, log);
+  solveRun(an, log);
   return an;
 }
 

@@ -1,7 +1,7 @@
 // Tests of the main loop (ample.cpp) on the paper's problems: Newton-Raphson
 // convergence order, compaction convergence with refinement, collapse extents
 // of [AMPLE] table 5, and a patch test through the whole loop.
-#include "ample/ample.h"
+#include "ample/program/run.h"
 #include "testProblems.h"
 #include <doctest/doctest.h>
 #include <algorithm>
@@ -243,7 +243,7 @@ TEST_SUITE("ample") {
       for (int i = 0; i < nD; ++i) an.mesh.bc.push_back({dof(n, i), du(i)});
     }
     RunLog log;
-    solve(an, log);
+    solveRun(an, log);
     // by hand: F = diag(1.02^4, 1.01^4, 1) (the grid resets each step), Hencky strain
     // diag(4 ln 1.02, 4 ln 1.01, 0), tau = lambda tr(eps) I + 2 mu eps (E = 1e6, nu = 0.3),
     // sigma = tau / (1.02^4 1.01^4)
@@ -266,7 +266,7 @@ TEST_SUITE("ample") {
     setDefault(P, "mp", 6);
     Analysis an = s->setupGrid(P);
     RunLog log;
-    solve(an, log, RunOptions{"", 0, true, 10});
+    solveRun(an, log, RunOptions{"", 0, true, 10});
     std::vector<double> r;
     for (const ResidualRow& row : log.residuals)
       if (row.lstp == 10) r.push_back(row.fErr);
@@ -323,5 +323,75 @@ TEST_SUITE("ample") {
         CHECK(seen == (k >= 2 ? 2 : 1));
       }
     }
+  }
+}
+
+TEST_SUITE("ample") {
+  // solve() with the default hooks is fig 4 alone: the core functions, no remedy, no log.
+  // The program's hooks must add nothing to a plain run's numbers.
+  // (the collapse with lone=0: its lone-node rule, an extension, leaves dofs out from load
+  // step 34 on, which changes the round-off; the compaction has no lone node)
+  TEST_CASE("solve: the core alone (default hooks) gives the program's hooks' points bit for bit (compaction, collapse lone=0)") {
+    for (const std::string name : {"compaction", "collapse"}) {
+      CAPTURE(name);
+      const Setup* s = findSetup(name);
+      Params P = s->params();
+      if (name == "collapse") setDefault(P, "lone", 0);
+      Analysis plain = s->setupGrid(P), full = s->setupGrid(P);
+      solve(plain);                                                  // Hooks(): the core's
+      RunLog log;
+      solveRun(full, log);
+      REQUIRE(plain.mpData.size() == full.mpData.size());
+      for (size_t p = 0; p < full.mpData.size(); ++p) {
+        CAPTURE(p);
+        CHECK(plain.mpData[p].mpC == full.mpData[p].mpC);
+        CHECK(plain.mpData[p].sig == full.mpData[p].sig);
+        CHECK(plain.mpData[p].F == full.mpData[p].F);
+      }
+      CHECK(plain.frct == full.frct);
+      CHECK(log.converged);
+    }
+  }
+
+  TEST_CASE("solve: a load step that does not converge throws NewtonFailure naming the step and fErr (core, no hooks)") {
+    const Setup* s = findSetup("collapse");
+    Params P = s->params();
+    setDefault(P, "NRitMax", 3);                                     // too few passes for the plastic steps
+    Analysis an = s->setupGrid(P);
+    std::string what;
+    try {
+      solve(an);
+    } catch (const NewtonFailure& e) {
+      what = e.what();
+      CHECK(e.kind == Failure::NotConverged);
+    }
+    CHECK(what.find("did not converge: fErr = ") != std::string::npos);
+    CHECK(what.find("after 3 Newton-Raphson passes") != std::string::npos);
+    CHECK(what.rfind("load step ", 0) == 0);
+  }
+
+  TEST_CASE("solve: each hook is called in its phase, in fig 4's order, once per pass or step") {
+    const Setup* s = findSetup("compaction");
+    Analysis an = s->setupGrid(s->params());
+    std::string calls;
+    long passes = 0;
+    Hooks h;
+    h.startStep = [&](Analysis&, const Increment& inc) { calls += "S" + std::to_string(inc.lstp); };
+    h.stepTerms = [&](Analysis&, const Increment&, Eigen::VectorXd&) { calls += "t"; };
+    h.passTerms = [&](const Eigen::VectorXd&, DetMPsOut&, Eigen::VectorXd&) { calls += "p"; };
+    h.afterPass = [&](const Analysis&, const Increment&, int NRit, double) { calls += std::to_string(NRit), passes++; };
+    h.afterUpdate = [&](Analysis&, const Increment&, int, double) { calls += "u"; };
+    h.endStep = [&](Analysis&, const Increment&) { calls += "E"; };
+    solve(an, h);
+    // S1 t (p pass)... u E S2 t (p pass)... u E: passes 0, 1, ... of each step in turn
+    CHECK(calls.substr(0, 7) == "S1tp0p1");
+    CHECK(calls.find("uES2t") != std::string::npos);
+    CHECK(calls.back() == 'E');
+    CHECK(std::count(calls.begin(), calls.end(), 'S') == an.lstps);
+    CHECK(std::count(calls.begin(), calls.end(), 't') == an.lstps);
+    CHECK(std::count(calls.begin(), calls.end(), 'u') == an.lstps);
+    CHECK(std::count(calls.begin(), calls.end(), 'E') == an.lstps);
+    CHECK(std::count(calls.begin(), calls.end(), 'p') == passes);   // passTerms once a pass
+    CHECK(passes >= 2 * an.lstps);                                  // NRit < 2: two passes at least
   }
 }

@@ -6,6 +6,7 @@
 // same on one and two threads), and the
 // elemMPinfo rule that a node with zero basis value and gradient is not linked.
 #include "ample/detFDoFs.h"
+#include "ample/remedies/loneNodes.h"
 #include "ample/detMPs.h"
 #include "ample/meshes/formCoord2D.h"
 #include "testProblems.h"
@@ -148,7 +149,7 @@ TEST_SUITE("detFDoFs") {
       elemMPinfo(an.mesh, an.mpData);
       const int n43 = 3 * 5 + 4, n44 = 4 * 5 + 4, n34 = 4 * 5 + 3;  // nodes (4,3) (4,4) (3,4)
       for (int n : {n43, n44, n34}) CHECK(linked(mp, n));
-      const std::vector<int> fd = detFDoFs(an.mesh, an.mpData), fdAll = activeCellDoFs(an.mesh);
+      const std::vector<int> fd = detFDoFsLone(an.mesh, an.mpData), fdAll = activeCellDoFs(an.mesh);
       int lonelyFree = 0;
       for (int n : {n43, n44, n34})
         for (int i = 0; i < nD; ++i) lonelyFree += has(fd, dof(n, i));
@@ -191,7 +192,7 @@ TEST_SUITE("detFDoFs") {
       for (int n : {n14, n24, n34}) CHECK(linked(an.mpData[p], n) == (p == moved));
     for (const MaterialPoint& mp : an.mpData) CHECK_FALSE((linked(mp, n44) || linked(mp, n43)));
 
-    const std::vector<int> fd = detFDoFs(an.mesh, an.mpData), fdAll = activeCellDoFs(an.mesh);
+    const std::vector<int> fd = detFDoFsLone(an.mesh, an.mpData), fdAll = activeCellDoFs(an.mesh);
     for (int i = 0; i < nD; ++i) {
       CHECK_FALSE(has(fd, dof(n14, i)));     // the smallest S of the three
       CHECK(has(fd, dof(n24, i)));
@@ -214,7 +215,7 @@ TEST_SUITE("detFDoFs") {
       std::uniform_real_distribution<double> r(-1.0, 1.0);
       for (MaterialPoint& mp : nudged) mp.mpC += 4e-16 * Vector2d(r(gen), r(gen)).cwiseProduct(mp.mpC);
       elemMPinfo(an.mesh, nudged);
-      CHECK(detFDoFs(an.mesh, nudged) == fd);
+      CHECK(detFDoFsLone(an.mesh, nudged) == fd);
     }
   }
 }
@@ -230,10 +231,10 @@ TEST_SUITE("detFDoFs") {
     REQUIRE(s != nullptr);
     Analysis an = s->setupGrid(s->params());
     RunLog log;
-    solve(an, log, RunOptions{"", 0, true, 33});
+    solveRun(an, log, RunOptions{"", 0, true, 33});
     REQUIRE(log.lastConverged == 33);
     elemMPinfo(an.mesh, an.mpData);                    // step 34 as the analysis starts it
-    const std::vector<int> fd = detFDoFs(an.mesh, an.mpData), fdAll = activeCellDoFs(an.mesh);
+    const std::vector<int> fd = detFDoFsLone(an.mesh, an.mpData), fdAll = activeCellDoFs(an.mesh);
     CHECK(fd.size() == fdAll.size() - 2);
     const SpMat Kt = detMPs(Eigen::VectorXd::Zero(an.mesh.nDoF()), an.mpData, an.formulation).Kt;
     CHECK(rankOf(Kt, fd) == int(fd.size()));
@@ -309,15 +310,15 @@ TEST_SUITE("detFDoFs") {
     const std::vector<int> expectedB = {2, 3, 5, 8, 9, 10, 11};
     for (int round = 0; round < 2; ++round) {
       CAPTURE(round);
-      CHECK(detFDoFs(a, ptsA, {}, false) == expectedA);
-      CHECK(detFDoFs(b, ptsB, {}, false) == expectedB);
+      CHECK(detFDoFs(a, ptsA) == expectedA);
+      CHECK(detFDoFs(b, ptsB) == expectedB);
     }
     // without the bcs: every dof of the linked nodes, and only those
     a.bc.clear();
     std::vector<int> all;
     for (int n : {0, 1, 2, 4, 5, 6, 8, 9, 10, 11, 14, 15})
       for (int i = 0; i < nD; ++i) all.push_back(dof(n, i));
-    CHECK(detFDoFs(a, ptsA, {}, false) == all);
+    CHECK(detFDoFs(a, ptsA) == all);
   }
   TEST_CASE("detFDoFs: a node reached by one point is as free as one reached by many / the order of the points does not matter") {
     Mesh m = formCoord2D(3, 1, 3.0, 1.0);                 // 8 nodes: 0-3 bottom, 4-7 top
@@ -325,10 +326,10 @@ TEST_SUITE("detFDoFs") {
                                       linkedTo(MpType::MPM, {1, 2, 5, 6}), linkedTo(MpType::MPM, {2, 3, 6, 7})};
     std::vector<int> all(16);
     for (int d = 0; d < 16; ++d) all[d] = d;
-    CHECK(detFDoFs(m, pts, {}, false) == all);
+    CHECK(detFDoFs(m, pts) == all);
     std::reverse(pts.begin(), pts.end());
-    CHECK(detFDoFs(m, pts, {}, false) == all);
+    CHECK(detFDoFs(m, pts) == all);
     pts.resize(1);                                        // only the point of cell 2: nodes 2 3 6 7
-    CHECK(detFDoFs(m, pts, {}, false) == std::vector<int>{4, 5, 6, 7, 12, 13, 14, 15});
+    CHECK(detFDoFs(m, pts) == std::vector<int>{4, 5, 6, 7, 12, 13, 14, 15});
   }
 }

@@ -96,7 +96,7 @@ TEST_SUITE("femode") {
     }
     fillCells(an.mpData, an.mesh, elastic(E, nu), 0.0);
     RunLog log;
-    solve(an, log);
+    solveRun(an, log);
     REQUIRE(log.lastConverged == steps);
     const double lx = 1 + steps * ex, ly = 1 + steps * ey;
     const double J = lx * ly, dSig = stretchStressError(an.mpData, henckyStretchStress(lx, ly, E, nu));
@@ -126,7 +126,7 @@ TEST_SUITE("femode") {
       setDefault(P, "rhoY", 2e4);  // von Mises, yields in the step
       fillCells(a[k].mpData, a[k].mesh, P, 0.0);
       RunLog log;
-      solve(a[k], log);
+      solveRun(a[k], log);
     }
     double dS = 0, dX = 0;
     for (size_t p = 0; p < a[0].mpData.size(); ++p) {

@@ -4,8 +4,9 @@
 // against central differences of the PC internal force. PC and UL describe the
 // same equilibrium in two frames, so their internal forces (and hence their
 // tangents) agree for the same increment.
-#include "ample/ample.h"
+#include "ample/program/run.h"
 #include "ample/detFDoFs.h"
+#include "ample/remedies/loneNodes.h"
 #include "ample/detMPs.h"
 #include "ample/elemMPinfo.h"
 #include "ample/stiffness/formPCstiff.h"
@@ -75,7 +76,7 @@ Analysis mpmBeam(Formulation f, const std::vector<std::pair<std::string, double>
   Analysis an = s->setupGrid(P);
   if (get(P, "ghost") > 0) an.ghostFrom = 1;  // the penalty on from the start, not after a failure
   RunLog log;
-  solve(an, log);
+  solveRun(an, log);
   return an;
 }
 }  // namespace
@@ -211,7 +212,7 @@ TEST_SUITE("formPCstiff") {
     std::vector<MaterialPoint> start;                         // the points at the start of step 11
     an.beforeStep = [&start](Analysis& a, int lstp) { if (lstp == 11) start = a.mpData; };
     RunLog log;
-    solve(an, log, RunOptions{"", 0, true, 11});              // steps 1 to 11
+    solveRun(an, log, RunOptions{"", 0, true, 11});              // steps 1 to 11
     const Eigen::VectorXd uvw = an.uvw;                       // the converged increment of step 11
     elemMPinfo(an.mesh, start);                               // the basis of step 11
     an.mpData = start;
@@ -234,7 +235,7 @@ TEST_SUITE("formPCstiff") {
     REQUIRE(lone.size() == 1);                                  // the corner point at the tip
     CHECK(mpUL[lone[0]].sig.cwiseAbs().maxCoeff() <= 1e-8 * sMax);  // stress free (to tol)
 
-    const std::vector<int> fd = detFDoFs(an.mesh, an.mpData);
+    const std::vector<int> fd = detFDoFsLone(an.mesh, an.mpData);
     Eigen::MatrixXd Kff(fd.size(), fd.size());
     for (size_t i = 0; i < fd.size(); ++i)
       for (size_t j = 0; j < fd.size(); ++j) Kff(i, j) = K(fd[i], fd[j]);

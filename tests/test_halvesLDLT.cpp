@@ -6,6 +6,7 @@
 // threads; a zero pivot in a half or in the interface reported; linSolve cutting the free
 // dofs of a mesh where its nodes are.
 #include "ample/linSolve.h"
+#include "ample/solver/chosenSolve.h"
 #include "ample/solver/halvesLDLT.h"
 #include <doctest/doctest.h>
 #include <Eigen/Dense>
@@ -214,7 +215,7 @@ TEST_SUITE("halvesLDLT") {
     FreeSystem lu, halves;
     halves.choice = LinearSolver::LDLT_HALVES;
     halves.nodeCoord = &coord;
-    const LinSolveOut a = linSolve({}, g.K, oobf, 2, fd, &lu), b = linSolve({}, g.K, oobf, 2, fd, &halves);
+    const LinSolveOut a = chosenSolve(lu, {}, g.K, oobf, 2, fd), b = chosenSolve(halves, {}, g.K, oobf, 2, fd);
     CHECK(halves.halves.interfaceSize() == 22);           // one line of 11 nodes
     CHECK(halves.fallbacks == 0);
     CHECK(relativeError(b.duvw, a.duvw) <= 1e-12);

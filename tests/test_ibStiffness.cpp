@@ -5,7 +5,7 @@
 // against the uniform stress. Expected values are built here, not from the library.
 #include "ample/meshes/formCoord2D.h"
 #include "ample/boundaries/ibStiffness.h"
-#include "ample/ample.h"
+#include "ample/program/run.h"
 #include "setups/setupHelpers.h"
 #include "setups/setups.h"
 #include <doctest/doctest.h>
@@ -82,7 +82,7 @@ Analysis block(double theta, bool nodal, RunLog& log, int ibK2 = 0) {
     fixDofs(an.mesh, 0, [&](double x, double) { return on(x, 0.14); }, -1e-3);
     fixDofs(an.mesh, 1, [&](double, double y) { return on(y, 0.04) || on(y, 0.14); });
   }
-  solve(an, log);
+  solveRun(an, log);
   return an;
 }
 }  // namespace
@@ -262,7 +262,7 @@ TEST_SUITE("ibStiffness") {
       setDefault(P, "ibK2", 0);
       RunLog log;
       Analysis an = s->setupGrid(P);
-      solve(an, log);
+      solveRun(an, log);
       REQUIRE(log.converged);
       const double predicted = 0.75 * dh * 0.01 / 0.1;          // delta = dh h, h = 10 mm, L = 0.1 m
       CHECK(std::abs(s->results(an, P)[1].second / predicted - 1) < 1e-3);
@@ -277,7 +277,7 @@ TEST_SUITE("ibStiffness") {
       Params P = s->params();
       setDefault(P, "theta", th);
       Analysis an = s->setupGrid(P);
-      solve(an, log);
+      solveRun(an, log);
       REQUIRE(log.converged);
       r.push_back(s->results(an, P));
     }
@@ -305,7 +305,7 @@ TEST_SUITE("ibStiffness") {
     Analysis an = s->setupGrid(P);
     const std::vector<Boundary> b0 = an.boundaries;
     RunLog log;
-    solve(an, log);
+    solveRun(an, log);
     REQUIRE(log.converged);
     REQUIRE(an.ibForce.size() == 4);
     const double E = 1e9, nu = 0.3, eps = 0.01, L = 0.1, k = E * eps / ((1 + nu) * (1 - 2 * nu));
@@ -334,7 +334,7 @@ TEST_SUITE("ibStiffness") {
     const Vector2d du = 1e-3 * Vector2d(-std::cos(M_PI / 6), -std::sin(M_PI / 6));
     CHECK((before.du[0] - du).norm() < 1e-18);
     RunLog log;
-    solve(an, log);
+    solveRun(an, log);
     REQUIRE(log.converged);
     const Results r = s->results(an, P);
     CHECK(r[0].second < 1e-7);                                    // ru

@@ -8,6 +8,7 @@
 // half the iterations allowed, and a direct solve where the Krylov one leaves a residual over
 // 1e-3 of the load (a nearly singular Kt).
 #include "ample/linSolve.h"
+#include "ample/solver/chosenSolve.h"
 #include "ample/solver/krylov.h"
 #include <doctest/doctest.h>
 #include <Eigen/Dense>
@@ -116,18 +117,18 @@ TEST_SUITE("krylov") {
     const std::vector<int> fd = allFree(n);
     const VectorXd b = load(n);
     KrylovSystem S;
-    const LinSolveOut first = linSolve({}, tridiagonal(n, 0.01, 0.0), b, 1, fd, &S);
+    const LinSolveOut first = chosenSolve(S, {}, tridiagonal(n, 0.01, 0.0), b, 1, fd);
     CHECK(S.factorisations == 1);
     CHECK(S.krylovSolves == 0);
     const SpMat K2 = tridiagonal(n, 0.012, 0.0);                  // the next pass: Kt changed a little
-    const LinSolveOut second = linSolve({}, K2, b, 2, fd, &S);
+    const LinSolveOut second = chosenSolve(S, {}, K2, b, 2, fd);
     const VectorXd ref = MatrixXd(K2).partialPivLu().solve(b);
     CHECK((second.duvw - ref).norm() <= 1e-10 * ref.norm());
     CHECK(S.factorisations == 1);                                 // no new factorisation
     CHECK(S.krylovSolves == 1);
     CHECK(S.krylovIterations >= 2);
     CHECK(S.krylovIterations <= 10);
-    linSolve({}, K2, b, 1, fd, &S);                               // a new load step: factorised again
+    chosenSolve(S, {}, K2, b, 1, fd);                               // a new load step: factorised again
     CHECK(S.factorisations == 2);
     CHECK(S.krylovSolves == 1);
     CHECK((first.duvw - MatrixXd(tridiagonal(n, 0.01, 0.0)).partialPivLu().solve(b)).norm() <= 1e-10 * ref.norm());
@@ -138,15 +139,15 @@ TEST_SUITE("krylov") {
     const VectorXd b = load(n);
     KrylovSystem S;
     S.krylovMaxIt = 3;
-    linSolve({}, tridiagonal(n, 1e-4, 0.0), b, 1, fd, &S);
+    chosenSolve(S, {}, tridiagonal(n, 1e-4, 0.0), b, 1, fd);
     const SpMat far = tridiagonal(n, 1.0, 0.0);                   // a very different pass
-    const LinSolveOut x = linSolve({}, far, b, 2, fd, &S);
+    const LinSolveOut x = chosenSolve(S, {}, far, b, 2, fd);
     CHECK(S.krylovSolves == 1);
     CHECK(S.krylovIterations == 3);                               // spent, then refactorised
     CHECK(S.factorisations == 2);
     const VectorXd ref = MatrixXd(far).partialPivLu().solve(b);
     CHECK((x.duvw - ref).norm() <= 1e-12 * ref.norm());
-    linSolve({}, far, b, 3, fd, &S);                              // the new factor is exact: 1 iteration
+    chosenSolve(S, {}, far, b, 3, fd);                              // the new factor is exact: 1 iteration
     CHECK(S.factorisations == 2);
     CHECK(S.krylovIterations == 4);
   }
@@ -155,10 +156,10 @@ TEST_SUITE("krylov") {
     const std::vector<int> fd = allFree(n);
     const VectorXd b = load(n);
     KrylovSystem S;
-    linSolve({}, tridiagonal(n, 0.01, 0.3), b, 1, fd, &S);
+    chosenSolve(S, {}, tridiagonal(n, 0.01, 0.3), b, 1, fd);
     CHECK(!S.factorSymmetric);
     const SpMat K2 = tridiagonal(n, 0.012, 0.31);
-    const LinSolveOut x = linSolve({}, K2, b, 2, fd, &S);
+    const LinSolveOut x = chosenSolve(S, {}, K2, b, 2, fd);
     const VectorXd ref = MatrixXd(K2).partialPivLu().solve(b);
     CHECK((x.duvw - ref).norm() <= 1e-10 * ref.norm());
     CHECK(S.factorisations == 1);
@@ -171,26 +172,26 @@ TEST_SUITE("krylov") {
     const VectorXd b = load(n);
     KrylovSystem S;
     S.krylovMaxIt = 30;
-    linSolve({}, tridiagonal(n, 1e-4, 0.0), b, 1, fd, &S);       // the step's factor
+    chosenSolve(S, {}, tridiagonal(n, 1e-4, 0.0), b, 1, fd);       // the step's factor
     const SpMat drifted = tridiagonal(n, 0.01, 0.0);
-    const LinSolveOut x = linSolve({}, drifted, b, 2, fd, &S);   // solved by PCG, slowly (20 iterations)
+    const LinSolveOut x = chosenSolve(S, {}, drifted, b, 2, fd);   // solved by PCG, slowly (20 iterations)
     REQUIRE(S.krylovSolves == 1);
     CHECK(S.krylovIterations > 15);                                // more than half of 30 ...
     CHECK(S.krylovIterations <= 30);                               // ... and converged
     CHECK(S.factorisations == 1);
     const VectorXd ref = MatrixXd(drifted).partialPivLu().solve(b);
     CHECK((x.duvw - ref).norm() <= 1e-10 * ref.norm());
-    linSolve({}, drifted, b, 3, fd, &S);                           // no Krylov try: factorised
+    chosenSolve(S, {}, drifted, b, 3, fd);                           // no Krylov try: factorised
     CHECK(S.krylovSolves == 1);
     CHECK(S.factorisations == 2);
-    linSolve({}, drifted, b, 4, fd, &S);                           // the new factor is exact: PCG again
+    chosenSolve(S, {}, drifted, b, 4, fd);                           // the new factor is exact: PCG again
     CHECK(S.krylovSolves == 2);
     CHECK(S.factorisations == 2);
     KrylovSystem T;                                                // a small drift: 13 iterations
-    linSolve({}, tridiagonal(n, 1e-4, 0.0), b, 1, fd, &T);
-    linSolve({}, tridiagonal(n, 0.002, 0.0), b, 2, fd, &T);
+    chosenSolve(T, {}, tridiagonal(n, 1e-4, 0.0), b, 1, fd);
+    chosenSolve(T, {}, tridiagonal(n, 0.002, 0.0), b, 2, fd);
     REQUIRE(T.krylovIterations <= 15);
-    linSolve({}, tridiagonal(n, 0.002, 0.0), b, 3, fd, &T);       // tried by PCG again
+    chosenSolve(T, {}, tridiagonal(n, 0.002, 0.0), b, 3, fd);       // tried by PCG again
     CHECK(T.krylovSolves == 2);
     CHECK(T.factorisations == 1);
   }
@@ -199,11 +200,11 @@ TEST_SUITE("krylov") {
     const std::vector<int> fd = allFree(n);                       // eigenvalue 4e-13, so x is huge and
     const VectorXd b = load(n);                                   // ||K x - b|| = 1e-14 ||K|| ||x|| is
     KrylovSystem S;                                               // not small against ||b||
-    linSolve({}, tridiagonal(n, 0.01, 0.0), b, 1, fd, &S);
+    chosenSolve(S, {}, tridiagonal(n, 0.01, 0.0), b, 1, fd);
     const double lowest = 2 - 2 * std::cos(M_PI / (n + 1));       // the 1D Laplacian's, analytic
     const SpMat K = tridiagonal(n, -lowest + 4e-13, 0.0);
     LinSolveOut x;
-    REQUIRE_NOTHROW(x = linSolve({}, K, b, 2, fd, &S));           // (Krylov's alone: "singular")
+    REQUIRE_NOTHROW(x = chosenSolve(S, {}, K, b, 2, fd));           // (Krylov's alone: "singular")
     CHECK(S.krylovSolves == 1);                                   // tried, then refactorised
     CHECK(S.factorisations == 2);
     CHECK((K * x.duvw - b).norm() <= 1e-3 * b.norm());

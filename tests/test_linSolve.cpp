@@ -5,10 +5,13 @@
 // the ones the build lacks (docs/scaling.md, "The sparse solve").
 #include "ample/errors.h"
 #include "ample/detFDoFs.h"
+#include "ample/remedies/loneNodes.h"
 #include "ample/linSolve.h"
+#include "ample/solver/chosenSolve.h"
 #include "ample/solver/solverChoice.h"
 #include "testProblems.h"
 #include <doctest/doctest.h>
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
@@ -44,7 +47,7 @@ std::vector<LinearSolver> solvers(bool builtOnes) {
 bool everySolverBuilt() { return solvers(false).empty(); }
 
 // Kt and fd of load step 1 of the collapse (a = 2: h = 1 m, 3 x 3 points per cell; uvw = 0,
-// the elastic tangent), as ample.cpp's solve() builds them before its first linSolve
+// the elastic tangent), as loadStep builds them before its first linSolve
 struct CollapseStep1 {
   SpMat Kt;
   std::vector<int> fd;
@@ -56,7 +59,7 @@ CollapseStep1 collapseStep1() {
   Analysis an = s->setupGrid(P);
   const int nDoF = an.mesh.nDoF();
   elemMPinfo(an.mesh, an.mpData, an.fem);
-  CollapseStep1 c{SpMat(), detFDoFs(an.mesh, an.mpData)};
+  CollapseStep1 c{SpMat(), detFDoFsLone(an.mesh, an.mpData)};
   DetMPsOut mps;
   mps.Kt = stiffnessPattern(nDoF, an.mpData);
   detMPs(Eigen::VectorXd::Zero(nDoF), an.mpData, an.formulation, mps);
@@ -133,14 +136,14 @@ TEST_SUITE("linSolve") {
     oobf << 0.7, 0.5, -1.0, 0.25, 2.0;
     FreeSystem lu, ldlt;
     ldlt.choice = LinearSolver::LDLT;
-    const LinSolveOut a = linSolve({{0, 0.1}}, chain(), oobf, 1, {1, 2, 3, 4}, &lu);
-    const LinSolveOut b = linSolve({{0, 0.1}}, chain(), oobf, 1, {1, 2, 3, 4}, &ldlt);
+    const LinSolveOut a = chosenSolve(lu, {{0, 0.1}}, chain(), oobf, 1, {1, 2, 3, 4});
+    const LinSolveOut b = chosenSolve(ldlt, {{0, 0.1}}, chain(), oobf, 1, {1, 2, 3, 4});
     CHECK((a.duvw - b.duvw).norm() <= 1e-14 * a.duvw.norm());
     CHECK(ldlt.fallbacks == 0);
     CHECK(ldlt.notes.empty());
     SpMat K = chain();
     K.coeffRef(2, 3) += 0.5;  // same pattern, no longer symmetric
-    const LinSolveOut c = linSolve({{0, 0.1}}, K, oobf, 1, {1, 2, 3, 4}, &ldlt);
+    const LinSolveOut c = chosenSolve(ldlt, {{0, 0.1}}, K, oobf, 1, {1, 2, 3, 4});
     const Eigen::VectorXd r = K * c.duvw - oobf;
     for (int d = 1; d < 5; ++d) CHECK(std::abs(r(d)) <= 1e-13);
     CHECK(ldlt.fallbacks == 1);
@@ -148,7 +151,7 @@ TEST_SUITE("linSolve") {
     // said once, kept for the run's end (ample prints it after a stop's reason)
     CHECK(ldlt.notes.find("solver=LDLT: Kt(fd,fd) not symmetric to 1e-12") != std::string::npos);
     const std::string once = ldlt.notes;
-    linSolve({{0, 0.1}}, K, oobf, 1, {1, 2, 3, 4}, &ldlt);
+    chosenSolve(ldlt, {{0, 0.1}}, K, oobf, 1, {1, 2, 3, 4});
     CHECK(ldlt.fallbacks == 2);
     CHECK(ldlt.notes == once);
   }
@@ -164,7 +167,7 @@ TEST_SUITE("linSolve") {
       K.makeCompressed();                               // (as detMPs gives Kt)
       FreeSystem ldlt;
       ldlt.choice = LinearSolver::LDLT;
-      const LinSolveOut c = linSolve({{0, 0.1}}, K, oobf, 1, {1, 2, 3, 4}, &ldlt);
+      const LinSolveOut c = chosenSolve(ldlt, {{0, 0.1}}, K, oobf, 1, {1, 2, 3, 4});
       const Eigen::VectorXd r = K * c.duvw - oobf;
       for (int d = 1; d < 5; ++d) CHECK(std::abs(r(d)) <= 1e-13);
       CHECK(ldlt.fallbacks == 1);
@@ -172,12 +175,12 @@ TEST_SUITE("linSolve") {
     }
   }
   // the old rule (same number of entries) would have kept the analysis of another pattern
-  TEST_CASE("linSolve: the cache keeps its analysis while the pattern is the same, and rebuilds for another pattern with as many entries") {
+  TEST_CASE("chosenSolve: the cache keeps its analysis while the pattern is the same, and rebuilds for another pattern with as many entries") {
     FreeSystem S;
     Eigen::VectorXd oobf(5);
     oobf << 0.7, 0.5, -1.0, 0.25, 2.0;
-    linSolve({{0, 0.1}}, chain(), oobf, 1, {1, 2, 3, 4}, &S);
-    linSolve({{0, 0.1}}, chain(), oobf, 2, {1, 2, 3, 4}, &S);
+    chosenSolve(S, {{0, 0.1}}, chain(), oobf, 1, {1, 2, 3, 4});
+    chosenSolve(S, {{0, 0.1}}, chain(), oobf, 2, {1, 2, 3, 4});
     CHECK(S.builds == 1);
     std::vector<Eigen::Triplet<double>> t;  // the chain with its last spring moved: 0-1, 1-2, 2-3, 2-4
     for (int i = 0; i < 4; ++i) {
@@ -188,7 +191,7 @@ TEST_SUITE("linSolve") {
     SpMat K(5, 5);
     K.setFromTriplets(t.begin(), t.end());
     REQUIRE(K.nonZeros() == chain().nonZeros());
-    const LinSolveOut o = linSolve({{0, 0.1}}, K, oobf, 1, {1, 2, 3, 4}, &S);
+    const LinSolveOut o = chosenSolve(S, {{0, 0.1}}, K, oobf, 1, {1, 2, 3, 4});
     CHECK(S.builds == 2);
     const Eigen::VectorXd r = K * o.duvw - oobf;
     for (int d = 1; d < 5; ++d) CHECK(std::abs(r(d)) <= 1e-13);
@@ -196,36 +199,36 @@ TEST_SUITE("linSolve") {
   // Kt's pattern changed only outside Kt(fd,fd) (two entries in the column of the prescribed
   // dof 4, stored after every free entry): Kt(fd,fd) and where its values sit in Kt are
   // unchanged, so the analysis is kept; other free dofs get a new one
-  TEST_CASE("linSolve: the cache keeps its analysis when Kt's pattern changes only outside Kt(fd,fd)") {
+  TEST_CASE("chosenSolve: the cache keeps its analysis when Kt's pattern changes only outside Kt(fd,fd)") {
     FreeSystem S;
     Eigen::VectorXd oobf(5);
     oobf << 0.7, 0.5, -1.0, 0.25, 2.0;
     const std::vector<int> fd{0, 1, 2, 3};
-    const LinSolveOut a = linSolve({{4, 0.1}}, chain(), oobf, 1, fd, &S);
+    const LinSolveOut a = chosenSolve(S, {{4, 0.1}}, chain(), oobf, 1, fd);
     SpMat K = chain();
     K.insert(0, 4) = 0.0;                                 // column 4: prescribed, stored after
     K.insert(2, 4) = 0.0;                                 // the free columns 0..3
     K.makeCompressed();
     REQUIRE(K.nonZeros() == chain().nonZeros() + 2);
-    const LinSolveOut b = linSolve({{4, 0.1}}, K, oobf, 1, fd, &S);
+    const LinSolveOut b = chosenSolve(S, {{4, 0.1}}, K, oobf, 1, fd);
     CHECK(S.builds == 1);
     CHECK((a.duvw - b.duvw).norm() == 0.0);               // (the same system: the same answer)
     K.insert(4, 2) = 0.0;                                 // column 2 grows: column 3's values move
     K.makeCompressed();
-    const LinSolveOut c = linSolve({{4, 0.1}}, K, oobf, 1, fd, &S);
+    const LinSolveOut c = chosenSolve(S, {{4, 0.1}}, K, oobf, 1, fd);
     CHECK(S.builds == 2);
     CHECK((a.duvw - c.duvw).norm() == 0.0);               // the values read where they now are
-    linSolve({{4, 0.1}}, K, oobf, 1, {0, 1, 3}, &S);     // other free dofs
+    chosenSolve(S, {{4, 0.1}}, K, oobf, 1, {0, 1, 3});     // other free dofs
     CHECK(S.builds == 3);
   }
   // a free entry that changes its row but not its place in Kt (column 0's rows {0, 1} become
   // {0, 2}): the positions fromKt knows still match, the pattern of Kt(fd,fd) does not
-  TEST_CASE("linSolve: the cache rebuilds when a free entry of Kt moves to another row in the same place") {
+  TEST_CASE("chosenSolve: the cache rebuilds when a free entry of Kt moves to another row in the same place") {
     FreeSystem S;
     Eigen::VectorXd oobf(5);
     oobf << 0.7, 0.5, -1.0, 0.25, 2.0;
     const std::vector<int> fd{0, 1, 2, 3};
-    linSolve({{4, 0.1}}, chain(), oobf, 1, fd, &S);
+    chosenSolve(S, {{4, 0.1}}, chain(), oobf, 1, fd);
     std::vector<Eigen::Triplet<double>> t;
     const SpMat C = chain();
     for (int c = 0; c < C.outerSize(); ++c)
@@ -234,7 +237,7 @@ TEST_SUITE("linSolve") {
     SpMat K(5, 5);
     K.setFromTriplets(t.begin(), t.end());
     REQUIRE(K.nonZeros() == C.nonZeros());
-    const LinSolveOut o = linSolve({{4, 0.1}}, K, oobf, 1, fd, &S);
+    const LinSolveOut o = chosenSolve(S, {{4, 0.1}}, K, oobf, 1, fd);
     CHECK(S.builds == 2);
     const Eigen::VectorXd r = K * o.duvw - oobf;
     for (int d : fd) CHECK(std::abs(r(d)) <= 1e-13);
@@ -250,7 +253,7 @@ TEST_SUITE("linSolve") {
     oobf << 1.0, 2.0;
     FreeSystem S;
     S.choice = LinearSolver::LDLT;
-    const LinSolveOut o = linSolve({}, K, oobf, 2, {0, 1}, &S);
+    const LinSolveOut o = chosenSolve(S, {}, K, oobf, 2, {0, 1});
     CHECK(S.fallbacks == 1);
     CHECK(std::abs(o.duvw(0) - 2.0) <= 1e-12);
     CHECK(std::abs(o.duvw(1) - 1.0) <= 1e-12);
@@ -277,7 +280,7 @@ TEST_SUITE("linSolve") {
     for (int d = 1; d < n; ++d) fd.push_back(d);
     FreeSystem S;
     S.choice = LinearSolver::LDLT;
-    const LinSolveOut o = linSolve({}, K, oobf, 2, fd, &S);
+    const LinSolveOut o = chosenSolve(S, {}, K, oobf, 2, fd);
     CHECK(S.fallbacks == 0);
     double u = 0, err = 0;                                // series springs: u_j = sum_{i<j} 1 / k_i
     for (int j = 1; j < n; ++j) {
@@ -316,12 +319,12 @@ TEST_SUITE("linSolve") {
     Eigen::VectorXd oobf(c.Kt.rows());
     for (int i = 0; i < oobf.size(); ++i) oobf(i) = std::sin(i + 1.0);  // any load
     FreeSystem lu;
-    const LinSolveOut a = linSolve({}, c.Kt, oobf, 2, c.fd, &lu);
+    const LinSolveOut a = chosenSolve(lu, {}, c.Kt, oobf, 2, c.fd);
     for (LinearSolver choice : solvers(true)) {
       CAPTURE(solverNames()[size_t(choice)]);
       FreeSystem S;
       S.choice = choice;
-      const LinSolveOut b = linSolve({}, c.Kt, oobf, 2, c.fd, &S);
+      const LinSolveOut b = chosenSolve(S, {}, c.Kt, oobf, 2, c.fd);
       MESSAGE(solverNames()[size_t(choice)], ": ", (a.duvw - b.duvw).norm() / a.duvw.norm());
       CHECK((a.duvw - b.duvw).norm() <= 1e-10 * a.duvw.norm());
       CHECK(S.fallbacks == 0);
@@ -334,23 +337,23 @@ TEST_SUITE("linSolve") {
     Eigen::VectorXd oobf(5);
     oobf << 0.7, 0.5, -1.0, 0.25, 2.0;
     FreeSystem lu;
-    const LinSolveOut a = linSolve({{0, 0.1}}, chain(), oobf, 1, {1, 2, 3, 4}, &lu);
+    const LinSolveOut a = chosenSolve(lu, {{0, 0.1}}, chain(), oobf, 1, {1, 2, 3, 4});
     SpMat K = chain();
     K.coeffRef(2, 3) += 0.5;                              // same pattern, no longer symmetric
     for (LinearSolver choice : solvers(true)) {
       CAPTURE(solverNames()[size_t(choice)]);
       FreeSystem S;
       S.choice = choice;
-      const LinSolveOut b = linSolve({{0, 0.1}}, chain(), oobf, 1, {1, 2, 3, 4}, &S);
+      const LinSolveOut b = chosenSolve(S, {{0, 0.1}}, chain(), oobf, 1, {1, 2, 3, 4});
       CHECK((a.duvw - b.duvw).norm() <= 1e-14 * a.duvw.norm());
-      const LinSolveOut c = linSolve({{0, 0.1}}, K, oobf, 1, {1, 2, 3, 4}, &S);
+      const LinSolveOut c = chosenSolve(S, {{0, 0.1}}, K, oobf, 1, {1, 2, 3, 4});
       const Eigen::VectorXd r = K * c.duvw - oobf;
       for (int d = 1; d < 5; ++d) CHECK(std::abs(r(d)) <= 1e-13);
       CHECK(S.fallbacks == (choice == LinearSolver::UMFPACK || choice == LinearSolver::KRYLOV ? 0 : 1));
       CHECK(S.builds == 1);
       FreeSystem T;
       T.choice = choice;
-      CHECK_THROWS_AS(linSolve({}, chain(), Eigen::VectorXd::Ones(5), 1, {0, 1, 2, 3, 4}, &T), RunError);
+      CHECK_THROWS_AS(chosenSolve(T, {}, chain(), Eigen::VectorXd::Ones(5), 1, {0, 1, 2, 3, 4}), RunError);
     }
   }
   // a choice this build lacks: InputError naming the parameter, the choices built and the
@@ -376,7 +379,7 @@ TEST_SUITE("linSolve") {
       CHECK(message.find(option) != std::string::npos);
       FreeSystem S;                                       // also when set in code, not by the setup
       S.choice = choice;
-      CHECK_THROWS_AS(linSolve({{0, 0.1}}, chain(), Eigen::VectorXd::Ones(5), 1, {1, 2, 3, 4}, &S), InputError);
+      CHECK_THROWS_AS(chosenSolve(S, {{0, 0.1}}, chain(), Eigen::VectorXd::Ones(5), 1, {1, 2, 3, 4}), InputError);
       const std::string out = std::string(AMPLE_TEST_TMP) + "/solver_refused";
       std::filesystem::create_directories(AMPLE_TEST_TMP);
       const std::string cmd = std::string(AMPLE_BINARY) + " collapse a=1 solver=" + name + " --quiet --out " +
@@ -457,5 +460,30 @@ TEST_SUITE("linSolve") {
     for (int d : fd) CHECK(std::abs(r(d)) <= 1e-13);
     CHECK(ab.drct(2) == doctest::Approx(r(2)).epsilon(1e-13));
     CHECK(ab.drct.sum() == doctest::Approx(-(f1 + f2).sum()).epsilon(1e-13));  // the chain's balance
+  }
+}
+
+TEST_SUITE("linSolve") {
+  // the core solves with SparseLU from scratch in every pass; chosenSolve (the program's for
+  // large runs) keeps Kt(fd,fd)'s pattern and SparseLU's analysis: the same factors, bit for bit
+  TEST_CASE("linSolve: the core's SparseLU and chosenSolve's kept analysis give the same increments bit for bit (collapse, passes 1 to 3)") {
+    const CollapseStep1 c = collapseStep1();
+    int held = -1;                                        // a prescribed dof: one not in fd
+    for (int d = 0; d < c.Kt.rows() && held < 0; ++d)
+      if (!std::binary_search(c.fd.begin(), c.fd.end(), d)) held = d;
+    REQUIRE(held >= 0);
+    const std::vector<BC> bc{{held, 0.01}};
+    FreeSystem S;                                         // solver=LU, the default
+    for (int NRit = 1; NRit <= 3; ++NRit) {
+      CAPTURE(NRit);
+      Eigen::VectorXd oobf(c.Kt.rows());
+      for (int i = 0; i < oobf.size(); ++i) oobf(i) = std::cos(NRit * (i + 1.0));
+      const LinSolveOut a = linSolve(bc, c.Kt, oobf, NRit, c.fd), b = chosenSolve(S, bc, c.Kt, oobf, NRit, c.fd);
+      CHECK(a.duvw.norm() > 0);
+      CHECK(a.duvw == b.duvw);
+      CHECK(a.drct == b.drct);
+      CHECK(a.duvw(held) == (NRit == 1 ? 0.01 : 0.0));
+    }
+    CHECK(S.builds == 1);                                 // analysed once for the three passes
   }
 }

@@ -102,8 +102,8 @@ void runBothWays(const std::string& name, const std::vector<std::pair<std::strin
   Analysis grid = s->setupGrid(P), quads = s->setupGrid(P);
   quads.mesh = asQuads(quads.mesh);
   RunLog l1, l2;
-  solve(grid, l1);
-  solve(quads, l2);
+  solveRun(grid, l1);
+  solveRun(quads, l2);
   CHECK(l1.totalNRit == l2.totalNRit);
   compareRuns(grid, quads, L, dSig, dX);
 }
@@ -446,7 +446,7 @@ TEST_SUITE("meshRuns") {
       }
     }
     RunLog log;
-    solve(an, log);
+    solveRun(an, log);
     const double dSig = stretchStressError(an.mpData, henckyStretchStress(1 + ex, 1 + ey, E, nu));
     double dU = 0;
     for (int n = 0; n < an.mesh.nodes(); ++n)
@@ -482,7 +482,7 @@ TEST_SUITE("meshRefusals") {
                                            "quadrilateral mesh"), InputError);
     Analysis an = gimpOnQuads(gimpParams());
     RunLog log;
-    CHECK_THROWS_WITH_AS(solve(an, log), doctest::Contains("mpType=2 (GIMP)"), InputError);
+    CHECK_THROWS_WITH_AS(solveRun(an, log), doctest::Contains("mpType=2 (GIMP)"), InputError);
     MaterialPoint mp = an.mpData[0];
     roomForBasis(mp, MAXN);
     mp.ne = 1, mp.eIN[0] = findCell(an.mesh, mp.mpC), mp.nn = nodesForMP(an.mesh, mp.eIN, 1, mp.nIN.data());

@@ -1,6 +1,6 @@
 // Tests of the output (postPro, makeVtk, makeVtkMP, makeVtkWriter, writeOutput): files
 // written by a short run are read back and compared with the state in memory.
-#include "ample/ample.h"
+#include "ample/program/run.h"
 #include "testProblems.h"
 #include <doctest/doctest.h>
 #include <algorithm>
@@ -295,7 +295,7 @@ TEST_SUITE("output") {
     const Params P = s->params();
     Analysis an = s->setupGrid(P);
     RunLog log;
-    solve(an, log);
+    solveRun(an, log);
     int rows = 0;
     for (const ResidualRow& r : log.residuals)
       if (r.NRit == 0 && r.lstp > 1) {                     // step 1 starts unstressed: 0

@@ -1,6 +1,6 @@
 // Tests of the failure paths of the main loop: a NaN names the load step, the
 // pass and the first bad point; a failed load step can be rescued by sub-division.
-#include "ample/ample.h"
+#include "ample/program/run.h"
 #include "ample/errors.h"
 #include "ample/meshes/formCoord2D.h"
 #include "ample/remedies/ghostPenalty.h"
@@ -26,7 +26,7 @@ TEST_SUITE("robustness") {
     an.mpData[3].mCst(0) = NAN;                    // Young's modulus of point 3
     RunLog log;
     try {
-      solve(an, log);
+      solveRun(an, log);
       FAIL("no exception");
     } catch (const NewtonFailure& e) {
       const std::string m = e.what();
@@ -45,11 +45,11 @@ TEST_SUITE("robustness") {
     setDefault(P, "lstps", 1);
     RunLog log0;
     Analysis plain = s->setupGrid(P);
-    CHECK_THROWS_AS(solve(plain, log0), NewtonFailure);  // the paper's algorithm
+    CHECK_THROWS_AS(solveRun(plain, log0), NewtonFailure);  // the paper's algorithm
     setDefault(P, "substeps", 8);
     Analysis an = s->setupGrid(P);
     RunLog log;
-    solve(an, log);
+    solveRun(an, log);
     CHECK(log.steps.back().converged);
     CHECK(log.steps.back().loadFactor == 1.0);
     CHECK(log.steps.size() > 2);                                     // every attempt recorded
@@ -57,7 +57,7 @@ TEST_SUITE("robustness") {
     setDefault(P, "lstps", 40);
     Analysis fine = s->setupGrid(P);
     RunLog logF;
-    solve(fine, logF);
+    solveRun(fine, logF);
     const double e1 = s->results(an, P)[0].second, e40 = s->results(fine, P)[0].second;
     CHECK(std::abs(e1 - e40) <= 0.5 * e40);  // same analytic solution, stepped differently
   }
@@ -71,7 +71,7 @@ TEST_SUITE("robustness") {
     Analysis an = s->setupGrid(P);
     RunLog log;
     try {
-      solve(an, log);
+      solveRun(an, log);
       FAIL("the toe never left the grid");
     } catch (const RunError& e) {
       const std::string m = e.what();
@@ -169,7 +169,7 @@ TEST_SUITE("stress") {
     Analysis an = s->setupGrid(P);
     RunLog log;
     try {
-      solve(an, log);
+      solveRun(an, log);
       FAIL("no failure reported");
     } catch (const NewtonFailure& e) {
       CHECK(std::string(e.what()).find("singular") != std::string::npos);
@@ -227,7 +227,7 @@ TEST_SUITE("stress") {
         Analysis an = s->setupGrid(P);
         RunLog log;
         try {  // 1 point per cell may empty a cell: then a clean, named stop is the answer
-          solve(an, log);
+          solveRun(an, log);
         } catch (const NewtonFailure& f) {
           CHECK(mp == 1);
           CHECK(std::string(f.what()).find("singular") != std::string::npos);
@@ -283,7 +283,7 @@ std::string tryAll(const std::string& name, const std::vector<std::pair<std::str
   an = s->setupGrid(P);
   RunLog log;
   try {
-    solve(an, log);
+    solveRun(an, log);
   } catch (const RunError& e) {
     return e.what();
   }

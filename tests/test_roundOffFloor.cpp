@@ -2,7 +2,7 @@
 // it (checkConverged in ample/ample.cpp): the formula against a hand computation, the
 // estimate against the measured stalls of a compaction column driven to tol = 1e-16, its
 // growth n^1.5 along the column, and the tol that the message suggests passing when re-run.
-#include "ample/ample.h"
+#include "ample/program/run.h"
 #include "ample/errors.h"
 #include "ample/solver/roundOffFloor.h"
 #include "setups/setups.h"
@@ -32,7 +32,7 @@ Failed runToFailure(int nelsy, double tol, int lstps = 40, bool acceptFloor = fa
   opt.acceptFloor = acceptFloor;
   Failed f;
   try {
-    solve(an, f.log, opt);
+    solveRun(an, f.log, opt);
   } catch (const NewtonFailure& e) {
     f.message = e.what();
   }
@@ -132,7 +132,7 @@ TEST_SUITE("roundOffFloor") {
       opt.acceptFloor = accept;
       std::string m;
       try {
-        solve(an, log, opt);
+        solveRun(an, log, opt);
       } catch (const NewtonFailure& e) {
         m = e.what();
       }
@@ -201,7 +201,7 @@ TEST_SUITE("long") {
     setDefault(P, "tol", 1e-8);
     Analysis an = s->setupGrid(P);
     RunLog log;
-    solve(an, log, RunOptions{"", 0, true, 1});          // load step 1 only
+    solveRun(an, log, RunOptions{"", 0, true, 1});          // load step 1 only
     REQUIRE(log.steps.size() == 1);
     CHECK(log.steps[0].converged);
     CHECK(log.steps[0].fErr <= 1e-8);

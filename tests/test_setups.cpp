@@ -1,7 +1,7 @@
 // Tests of the setups' reported results against values that share no code with them
 // the compaction error of eq 37 and the analytic stress of eq 36
 // (setups/compaction.cpp results()), by hand and by an independent calculation.
-#include "ample/ample.h"
+#include "ample/program/run.h"
 #include "testProblems.h"
 #include <doctest/doctest.h>
 #include <cmath>
@@ -17,7 +17,7 @@ Analysis compaction(const std::vector<std::pair<std::string, double>>& set, Para
   for (const auto& kv : set) setDefault(P, kv.first, kv.second);
   Analysis an = s->setupGrid(P);
   RunLog log;
-  solve(an, log);
+  solveRun(an, log);
   REQUIRE(log.converged);
   return an;
 }

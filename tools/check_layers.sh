@@ -6,16 +6,17 @@
 #                   ample/boundaries/boundary.h
 #   0 constitutive  constitutive/*  (Eigen and the standard library only; exercise.h, the
 #                   student copy's error, lives here so that nothing of ample/ is needed)
-#   1 pieces        ample/meshes/* ample/stiffness/* ample/solver/*
-#   2 parts         ample/basis/* ample/boundaries/* ample/remedies/*
-#   3 steps         ample/*.h ample/*.cpp (the functions the loop calls: elemMPinfo,
-#                   detExtForce, detFDoFs, linSolve, detMPs, updateMPs)
-#   3 fast          ample/fast/* (a function of the steps replaced as a whole for large
-#                   runs; included by ample/program/* only, which chooses it)
-#   4 setups        setups/*
-#   5 output        plotting/*
-#   6 loop          ample/ample.h ample/ample.cpp
-#   7 program       ample/program/*
+#   1 pieces        ample/meshes/* ample/stiffness/*
+#   2 parts         ample/basis/*
+#   3 core          ample/*.h ample/*.cpp (the loop, its hooks and the functions it calls:
+#                   elemMPinfo, detExtForce, detFDoFs, linSolve, detMPs, updateMPs)
+#   4 extensions    ample/solver/* ample/remedies/* ample/boundaries/* ample/fast/* (they may
+#                   include the core, never the other way; ample/fast/, a core function
+#                   replaced as a whole for large runs, is included by ample/program/* only,
+#                   which chooses it)
+#   5 setups        setups/*
+#   6 output        plotting/*
+#   7 program       ample/program/* (the command line, the run and its hooks)
 # and no two modules (a .h/.cpp pair) include each other, directly or round a
 # cycle (checked with tsort over the module graph). Prints every offending
 # include; exit 0 when there is none, 1 otherwise.
@@ -26,15 +27,14 @@ cd "$(dirname "$0")/.."
 layer() {  # layer of a project file, -1 for one outside the layered tree
   case "$1" in
     ample/mpData.h|ample/mpData.cpp|ample/basisArena.h|ample/errors.h|ample/analysis.h|ample/boundaries/boundary.h|constitutive/*) echo 0 ;;
-    ample/meshes/*|ample/stiffness/*|ample/solver/*) echo 1 ;;
-    ample/fast/*) echo 3 ;;
-    ample/basis/*|ample/boundaries/*|ample/remedies/*) echo 2 ;;
-    ample/ample.h|ample/ample.cpp) echo 6 ;;
+    ample/meshes/*|ample/stiffness/*) echo 1 ;;
+    ample/basis/*) echo 2 ;;
+    ample/solver/*|ample/remedies/*|ample/boundaries/*|ample/fast/*) echo 4 ;;
     ample/program/*) echo 7 ;;
     ample/*/*) echo -1 ;;   # a folder of ample/ without a layer
     ample/*) echo 3 ;;
-    setups/*) echo 4 ;;
-    plotting/*) echo 5 ;;
+    setups/*) echo 5 ;;
+    plotting/*) echo 6 ;;
     *) echo -1 ;;
   esac
 }

@@ -14,7 +14,7 @@
 #     it has) and the lines that hold code, then the total of both folders and
 #     the number of files with at least one executed line ("files entered");
 #   - the same totals for plotting/ and setups/ (outside the count);
-#   - per core function (solve, elemMPinfo, detExtForce, detFDoFs, linSolve,
+#   - per core function (solve, loadStep, elemMPinfo, detExtForce, detFDoFs, linSolve,
 #     detMPs, updateMPs, Hooke3d, VMconst): the executed lines between the first
 #     and last line of its body as gcov's function record gives them (lambdas
 #     inside the body included), the lines with code there, and its calls.
@@ -151,7 +151,7 @@ for name in ("plotting/", "setups/", "ample/program/"):
 
 print("core functions: executed lines / lines with code between the function's first and last line"
       " (name/N: the overload of N parameters)")
-core_funcs = [("ample/ample.cpp", "solve"), ("ample/elemMPinfo.cpp", "elemMPinfo"),
+core_funcs = [("ample/ample.cpp", "solve"), ("ample/ample.cpp", "loadStep"), ("ample/elemMPinfo.cpp", "elemMPinfo"),
               ("ample/detExtForce.cpp", "detExtForce"), ("ample/detFDoFs.cpp", "detFDoFs"),
               ("ample/linSolve.cpp", "linSolve"), ("ample/detMPs.cpp", "detMPs"),
               ("ample/updateMPs.cpp", "updateMPs"), ("constitutive/Hooke3d.cpp", "Hooke3d"),

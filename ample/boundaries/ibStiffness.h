@@ -20,7 +20,7 @@
 // C: the plane-strain elastic matrix of the cell, from the mean E, nu of the
 // points linked to the cell (eIN, so elemMPinfo must have run); a cut cell with
 // no point gives nothing (its nodes are not free dofs: detFDoFs).
-// addImplicitBoundaries, the one line in the Newton loop after detMPs, adds
+// addImplicitBoundaries, called by the passTerms hook after detMPs (program/run.cpp), adds
 // Kt += K_IB, fint += K_IB uvw - f_IB and returns the boundary reactions
 // f_IB - K_IB uvw (the normalisation of eq 35 counts them with frct); nothing
 // and zeros when there are no implicit boundaries. moveBoundaries: after a

@@ -2,7 +2,7 @@
 // detMPsFast — detMPs for large runs: the same numbers, faster
 //--------------------------------------------------------------------------
 // Replaces detMPs (ample/detMPs.h) as a whole where the program chooses it
-// (RunOptions::detMPs; program/cli.cpp), with no equation of its own: the
+// (RunOptions::pointLoop; program/cli.cpp, chosen in program/run.cpp), with no equation of its own: the
 // same addPoint for every point, the same sums in the same order. What it adds:
 //   runs of fewer than fastFrom() points (fastFrom.h): detMPs itself;
 //   exp(2 eps_e,n) of every point once per load step (out.bEn, eq 9);

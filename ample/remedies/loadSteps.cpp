@@ -10,22 +10,16 @@
 
 namespace ample {
 
-LoadSteps::LoadSteps(int lstps, int substeps, int lastStep)
-    : lstps_(lstps), substeps_(substeps), lastStep_(lastStep > 0 ? std::min(lastStep, lstps) : lstps) {}
-
-bool LoadSteps::next(Increment& inc) {
-  if (!todo_.empty()) {
-    inc = todo_.back();
-    todo_.pop_back();
-    return true;
+// one attempt at inc; a failure goes to the hook again (which may retry it in turn)
+static void attempt(Analysis& an, const Increment& inc, const Hooks& hooks) {
+  try {
+    loadStep(an, inc, hooks);
+  } catch (const RunError& e) {
+    hooks.failedStep(an, inc, e);
   }
-  if (lstp_ == lastStep_) return false;
-  ++lstp_;
-  inc = Increment{lstp_, double(lstp_ - 1) / lstps_, double(lstp_) / lstps_, 0, true, true, ""};
-  return true;
 }
 
-void LoadSteps::retry(const Increment& inc, const RunError& e, Analysis& an, bool quiet) {
+void retryStep(Analysis& an, const Increment& inc, const RunError& e, const Hooks& hooks, bool quiet) {
   std::string failure = e.what();
   if (!inc.withoutGhost.empty())                                  // it failed with the penalty too
     failure += " (with the ghost penalty " + std::to_string(an.ghost) + "; without it: " +
@@ -37,15 +31,14 @@ void LoadSteps::retry(const Increment& inc, const RunError& e, Analysis& an, boo
     Increment again = inc;
     again.first = false;
     again.withoutGhost = e.what();
-    todo_.push_back(again);
-    return;
+    return attempt(an, again, hooks);
   }
-  if (inc.depth >= substeps_) throw NewtonFailure(failure, e.kind);  // the paper's way: the run stops
+  if (inc.depth >= an.substeps) throw NewtonFailure(failure, e.kind);  // the paper's way: the run stops
   restoreConverged(an.mpData);                                    // remedy 2: halves
   if (!quiet) std::printf("  %s: retrying with half the increment\n", failure.c_str());
   const double mid = 0.5 * (inc.lf0 + inc.lf1);
-  todo_.push_back({inc.lstp, mid, inc.lf1, inc.depth + 1, false, inc.last, ""});  // second half
-  todo_.push_back({inc.lstp, inc.lf0, mid, inc.depth + 1, false, false, ""});     // first half
+  attempt(an, {inc.lstp, inc.lf0, mid, inc.depth + 1, false, false, ""}, hooks);     // first half
+  attempt(an, {inc.lstp, mid, inc.lf1, inc.depth + 1, false, inc.last, ""}, hooks);  // second half
 }
 
 static std::string smallerSteps(const Analysis& an, int lstpsMax) {

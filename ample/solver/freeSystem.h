@@ -7,7 +7,7 @@
 //   buildFreeSystem  extracts the pattern of Kt(fd,fd) once, remembers where
 //                    each of its values sits in Kt (fromKt) and runs the
 //                    chosen solver's symbolic analysis (its ordering) once;
-//   refillFreeSystem copies Kt's values into it for each pass, and linSolve
+//   refillFreeSystem copies Kt's values into it for each pass, and chosenSolve
 //                    only refactorises numerically.
 // The main loop keeps one FreeSystem for the whole run: a load step whose fd
 // and Kt(fd,fd) pattern (Kt's free entries compared with fromKt entry by

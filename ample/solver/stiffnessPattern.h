@@ -1,5 +1,5 @@
 //--------------------------------------------------------------------------
-// stiffnessPattern — the sparse matrix type and the sparsity of Kt for one load step
+// stiffnessPattern — the sparsity of Kt for one load step
 //--------------------------------------------------------------------------
 // A fast part (see docs/structure.md, "The fast parts"). [AMPLE] eq 30: Kt
 // couples two nodes when a material point links both. The points link the
@@ -27,8 +27,6 @@
 #include <climits>
 
 namespace ample {
-
-using SpMat = Eigen::SparseMatrix<double>;  // column-major compressed sparse matrix
 
 SpMat stiffnessPattern(int nDoF, const std::vector<MaterialPoint>& mpData);
 // val: the values of Kt's pattern (Kt.valuePtr(), or a buffer of the same length)

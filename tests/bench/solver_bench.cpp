@@ -34,6 +34,7 @@
 //--------------------------------------------------------------------------
 #include "ample/program/cli.h"
 #include "ample/detFDoFs.h"
+#include "ample/remedies/loneNodes.h"
 #include "ample/detMPs.h"
 #include "ample/elemMPinfo.h"
 #include "ample/solver/freeSystem.h"
@@ -211,12 +212,12 @@ SpMat collapseKff(int a, int mp, int after, long& nmp) {
     RunLog log;
     RunOptions opt;
     opt.quiet = true, opt.vtkEvery = 0, opt.lastStep = after;
-    solve(an, log, opt);
+    solveRun(an, log, opt);
   }
   nmp = long(an.mpData.size());
   const int nDoF = an.mesh.nDoF();
   elemMPinfo(an.mesh, an.mpData, an.fem);
-  const std::vector<int> fd = detFDoFs(an.mesh, an.mpData);
+  const std::vector<int> fd = detFDoFsLone(an.mesh, an.mpData);
   DetMPsOut mps;
   mps.Kt = stiffnessPattern(nDoF, an.mpData);
   detMPs(Eigen::VectorXd::Zero(nDoF), an.mpData, an.formulation, mps);

@@ -1,0 +1,63 @@
+//--------------------------------------------------------------------------
+// hooks — where the extensions join the main loop, one per phase
+//--------------------------------------------------------------------------
+// A plain run's hooks are the core functions and empty hooks (the defaults
+// below), and solve() is then [AMPLE] fig 4. The program fills them in
+// (ample/program/run.cpp) with what the setup and its parameters ask for:
+// the fast loops of large runs, the other solvers, the remedies, the implicit
+// boundaries, the finite element mode, progress, the log and its timers.
+// Inputs/outputs: see each hook; an empty one is skipped.
+//--------------------------------------------------------------------------
+#pragma once
+#include "analysis.h"
+#include "detFDoFs.h"
+#include "detMPs.h"
+#include "elemMPinfo.h"
+#include "errors.h"
+#include "linSolve.h"
+#include <functional>
+#include <string>
+
+namespace ample {
+
+struct Increment {              // load step lstp, or a part of it, from load factor lf0 to lf1
+  int lstp = 1;
+  double lf0 = 0, lf1 = 1;
+  int depth = 0;                // halvings so far (0: the whole step; remedy substeps=)
+  bool first = true;            // the first attempt at its load step (not a half, not a retry)
+  bool last = true;             // it ends its load step
+  std::string withoutGhost;     // the failure without the ghost penalty, if retried with it
+  // the share of the step's prescribed displacement increments (1 for a whole step)
+  double bcScale(int lstps) const { return (lf1 - lf0) * lstps; }
+};
+
+// the core's convergence check (ample.cpp): fErr > tol, or not a number, throws NewtonFailure
+// naming the load step and fErr; uvw and load (fext + frct) are for a hook that explains more
+void checkConverged(const Analysis& an, const Increment& inc, int NRit, double fErr,
+                    const Eigen::VectorXd& uvw, const Eigen::VectorXd& load);
+
+struct Hooks {
+  // solve(): the load steps
+  std::function<void(Analysis& an, const Increment& inc)> startStep;        // progress, setup's beforeStep
+  std::function<void(Analysis& an, const Increment& inc, const RunError& e)> failedStep;  // retries (empty: stop)
+  std::function<void(Analysis& an, const Increment& inc)> endStep;          // setup's afterStep, postPro, log
+  // loadStep(): the functions of fig 4, each replaced as a whole or kept
+  std::function<void(Mesh&, std::vector<MaterialPoint>&, bool keepCells)> elemMPinfo = ample::elemMPinfo;
+  std::function<void(Analysis& an, const Increment& inc, Eigen::VectorXd& fext)> stepTerms;  // body force,
+                                                                            // ghost penalty, boundaries
+  std::function<std::vector<int>(const Mesh&, const std::vector<MaterialPoint>&)> detFDoFs = ample::detFDoFs;
+  std::function<LinSolveOut(const std::vector<BC>&, const SpMat& Kt, const Eigen::VectorXd& oobf, int NRit,
+                            const std::vector<int>& fd)> linSolve = ample::linSolve;
+  std::function<void(const Eigen::VectorXd& uvw, std::vector<MaterialPoint>&, Formulation, DetMPsOut&)>
+      detMPs = PointLoop(ample::detMPs);
+  std::function<void(const Eigen::VectorXd& uvw, DetMPsOut& mps, Eigen::VectorXd& fbnd)> passTerms;  // Kt,
+                                                     // fint and reactions fbnd of ghost penalty, boundaries
+  std::function<void(const Analysis& an, const Increment& inc, int NRit, double fErr)> afterPass;  // log;
+                                                                            // a NaN stops the step
+  std::function<void(const Analysis& an, const Increment& inc, int NRit, double fErr, const Eigen::VectorXd& uvw,
+                     const Eigen::VectorXd& load)> checkConverged = ample::checkConverged;  // or a diagnosis
+  std::function<void(Analysis& an, const Increment& inc, int NRit, double fErr)> afterUpdate;  // FE mode,
+                                                                            // boundaries, split, log
+};
+
+}  // namespace ample
