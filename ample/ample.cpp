@@ -39,7 +39,7 @@ void loadStep(Analysis& an, const Increment& inc, const Hooks& hooks) {
   hooks.elemMPinfo(mesh, mpData, an.fem);                           // basis functions
   Eigen::VectorXd fext = detExtForce(nDoF, an.g, mpData) * inc.lf1; // external force
   if (hooks.stepTerms) hooks.stepTerms(an, inc, fext);              // hook: body force, ...
-  const std::vector<BC> bc = scaled(mesh.bc, inc.bcScale(an.lstps)); // the step's increments
+  const std::vector<BC> bc = scaled(mesh.bc, (inc.lf1 - inc.lf0) * an.lstps);  // the step's share
   const std::vector<int> fd = hooks.detFDoFs(mesh, mpData);         // free dofs
   Eigen::VectorXd uvw = Eigen::VectorXd::Zero(nDoF), frct = uvw, fbnd = uvw, oobf = fext;
   DetMPsOut mps;                                                    // fint, Kt

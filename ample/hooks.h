@@ -27,8 +27,6 @@ struct Increment {              // load step lstp, or a part of it, from load fa
   bool first = true;            // the first attempt at its load step (not a half, not a retry)
   bool last = true;             // it ends its load step
   std::string withoutGhost;     // the failure without the ghost penalty, if retried with it
-  // the share of the step's prescribed displacement increments (1 for a whole step)
-  double bcScale(int lstps) const { return (lf1 - lf0) * lstps; }
 };
 
 // the core's convergence check (ample.cpp): fErr > tol, or not a number, throws NewtonFailure

@@ -134,7 +134,8 @@ static Hooks runHooks(Analysis& an, RunLog& log, const RunOptions& opt, RunState
     T.detExtForce += x.gap.lap();
     if (a.bodyForce) fext += timed(T.detExtForce, detBodyForce, int(fext.size()), a.bodyForce, inc.lf1, a.mpData);
     x.Kgp = ghostPenaltyOf(a);                                       // remedy (off: empty)
-    x.ib = ibStiffness(a.mesh, a.boundaries, a.mpData, inc.lstp, inc.bcScale(a.lstps));  // (none: empty)
+    if (!a.boundaries.empty())                                       // [Boundaries]: K_IB, f_IB
+      x.ib = ibStiffness(a.mesh, a.boundaries, a.mpData, inc.lstp, (inc.lf1 - inc.lf0) * a.lstps);
     x.NRit = 0, x.fErr = 1.0;
   };
   if (an.lone)
@@ -177,10 +178,12 @@ static Hooks runHooks(Analysis& an, RunLog& log, const RunOptions& opt, RunState
   h.afterUpdate = [&log, &x, &opt, &T](Analysis& a, const Increment& inc, int NRit, double fErr) {
     T.updateMPs += x.gap.lap();
     recordStep(log, inc, NRit, fErr, x.Kff, true);
-    a.ibForce = boundaryForces(x.ib, a.uvw, int(a.boundaries.size()));  // [Boundaries] (none: empty)
     if (a.fem) moveMesh(a.mesh, a.uvw);                              // FEM: the mesh follows (MPM: reset)
-    moveBoundaries(a.boundaries, inc.lstp, inc.bcScale(a.lstps));    // [Boundaries]: by their du
-    log.splits += splitPoints(a.mesh, a.split, a.mpData, opt.quiet); // remedy (off: nothing)
+    if (!a.boundaries.empty()) {                                     // [Boundaries]: forces, motion by du
+      a.ibForce = boundaryForces(x.ib, a.uvw, int(a.boundaries.size()));
+      moveBoundaries(a.boundaries, inc.lstp, (inc.lf1 - inc.lf0) * a.lstps);
+    }
+    if (a.split > 0) log.splits += splitPoints(a.mesh, a.split, a.mpData, opt.quiet);  // remedy
   };
   h.failedStep = [&log, &x, &opt, &self](Analysis& a, const Increment& inc, const RunError& e) {
     if (e.kind == Failure::Other || e.kind == Failure::LeftGrid || e.kind == Failure::DomainTooLarge)
