@@ -46,7 +46,7 @@ void loadStep(Analysis& an, const Increment& inc, const Hooks& hooks) {
   double fErr = 1.0;
   int NRit = 0;
   while ((fErr > an.tol && NRit < an.NRitMax) || NRit < 2) {       // Newton-Raphson
-    const LinSolveOut ls = hooks.linSolve(bc, mps.Kt, oobf, NRit, fd);
+    const LinSolveOut ls = linSolve(bc, mps.Kt, oobf, NRit, fd, hooks.solveFree);
     uvw += ls.duvw;                                                 // eq 29
     frct += ls.drct;
     hooks.detMPs(uvw, mpData, an.formulation, mps);                 // fint, Kt (eqs 30-31)

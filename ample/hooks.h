@@ -44,8 +44,7 @@ struct Hooks {
   std::function<void(Analysis& an, const Increment& inc, Eigen::VectorXd& fext)> stepTerms;  // body force,
                                                                             // ghost penalty, boundaries
   std::function<std::vector<int>(const Mesh&, const std::vector<MaterialPoint>&)> detFDoFs = ample::detFDoFs;
-  std::function<LinSolveOut(const std::vector<BC>&, const SpMat& Kt, const Eigen::VectorXd& oobf, int NRit,
-                            const std::vector<int>& fd)> linSolve = ample::linSolve;
+  FreeSolve solveFree = ample::solveFree;                                   // linSolve's Kt(fd,fd) \ rhs
   std::function<void(const Eigen::VectorXd& uvw, std::vector<MaterialPoint>&, Formulation, DetMPsOut&)>
       detMPs = PointLoop(ample::detMPs);
   std::function<void(const Eigen::VectorXd& uvw, DetMPsOut& mps, Eigen::VectorXd& fbnd)> passTerms;  // Kt,

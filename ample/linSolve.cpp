@@ -14,7 +14,7 @@ namespace ample {
 static SpMat freeBlock(const SpMat& Kt, const std::vector<int>& fd);
 
 LinSolveOut linSolve(const std::vector<BC>& bc, const SpMat& Kt, const Eigen::VectorXd& oobf,
-                     int NRit, const std::vector<int>& fd) {
+                     int NRit, const std::vector<int>& fd, const FreeSolve& solve) {
   // BEGIN EXERCISE linSolve
   const int nDoF = int(oobf.size()), nfd = int(fd.size());
   LinSolveOut out{Eigen::VectorXd::Zero(nDoF), Eigen::VectorXd::Zero(nDoF)};
@@ -23,26 +23,31 @@ LinSolveOut linSolve(const std::vector<BC>& bc, const SpMat& Kt, const Eigen::Ve
     for (const BC& c : bc) out.duvw(c.dof) = c.value;   // prescribed increments
   const Eigen::VectorXd Kd = Kt * out.duvw;             // Kt(:,bc) duvw(bc)
   if (nfd > 0) {
-    const SpMat Kff = freeBlock(Kt, fd);                // Kt(fd,fd)
     Eigen::VectorXd rhs(nfd);
     for (int r = 0; r < nfd; ++r) rhs(r) = oobf(fd[r]) - Kd(fd[r]);
-    Eigen::SparseLU<SpMat, Eigen::COLAMDOrdering<int>> lu(Kff);
-    if (lu.info() != Eigen::Success)
-      throw RunError("SparseLU could not factorise the stiffness Kt(fd,fd) (" + lu.lastErrorMessage() +
-                     "): the problem is singular, e.g. a rigid-body mode without enough boundary "
-                     "conditions or a nearly empty cell", Failure::Singular);
-    const Eigen::VectorXd x = lu.solve(rhs);
-    const double res = (Kff * x - rhs).norm(), scale = rhs.norm() + 1e-300;
-    if (!(res <= 1e-3 * scale))                         // a zero pivot: no solution exists
-      throw RunError("the stiffness Kt(fd,fd) is singular (linear solve residual " +
-                     std::to_string(res / scale) + " of the right-hand side): a rigid-body mode "
-                     "without enough boundary conditions, or a nearly empty cell", Failure::Singular);
+    const Eigen::VectorXd x = solve(Kt, fd, rhs, NRit);  // Kt(fd,fd) \ rhs
     for (int r = 0; r < nfd; ++r) out.duvw(fd[r]) = x(r);
   }
   const Eigen::VectorXd Ku = Kt * out.duvw;
   for (const BC& c : bc) out.drct(c.dof) = Ku(c.dof) - oobf(c.dof);
   return out;
   // END EXERCISE
+}
+
+Eigen::VectorXd solveFree(const SpMat& Kt, const std::vector<int>& fd, const Eigen::VectorXd& rhs, int /*NRit*/) {
+  const SpMat Kff = freeBlock(Kt, fd);                  // Kt(fd,fd)
+  Eigen::SparseLU<SpMat, Eigen::COLAMDOrdering<int>> lu(Kff);
+  if (lu.info() != Eigen::Success)
+    throw RunError("SparseLU could not factorise the stiffness Kt(fd,fd) (" + lu.lastErrorMessage() +
+                   "): the problem is singular, e.g. a rigid-body mode without enough boundary "
+                   "conditions or a nearly empty cell", Failure::Singular);
+  const Eigen::VectorXd x = lu.solve(rhs);
+  const double res = (Kff * x - rhs).norm(), scale = rhs.norm() + 1e-300;
+  if (!(res <= 1e-3 * scale))                           // a zero pivot: no solution exists
+    throw RunError("the stiffness Kt(fd,fd) is singular (linear solve residual " +
+                   std::to_string(res / scale) + " of the right-hand side): a rigid-body mode "
+                   "without enough boundary conditions, or a nearly empty cell", Failure::Singular);
+  return x;
 }
 
 // Kt(fd,fd): the entries of Kt in free rows and columns, renumbered 0..nfd-1 (fd ascending)

@@ -5,14 +5,16 @@
 // prescribed displacement increments enter at NRit == 1 and are zero after:
 //   duvw(bc) = prescribed, duvw(fd) = Kt(fd,fd) \ (oobf(fd) - Kt(fd,bc) duvw(bc)),
 //   drct(bc) = Kt(bc,:) duvw - oobf(bc).
-// Solved with Eigen's SparseLU (COLAMD ordering); a singular Kt(fd,fd) throws
+// Kt(fd,fd) x = rhs is solved by solveFree: Eigen's SparseLU (COLAMD ordering),
+// or another solver (ample/solver/chosenSolve.h); a singular Kt(fd,fd) throws
 // RunError (Failure::Singular).
-// Inputs:  bc (nbc) · Kt (nDoF x nDoF) · oobf (nDoF) · NRit · fd (nfd)
+// Inputs:  bc (nbc) · Kt (nDoF x nDoF) · oobf (nDoF) · NRit · fd (nfd) · [solve]
 // Outputs: duvw (nDoF) · drct (nDoF)
 // Tests:   tests/test_linSolve.cpp
 //--------------------------------------------------------------------------
 #pragma once
 #include "mpData.h"
+#include <functional>
 
 namespace ample {
 
@@ -21,7 +23,12 @@ struct LinSolveOut {
   Eigen::VectorXd drct;  // iterative reaction force increment
 };
 
+// x with Kt(fd,fd) x = rhs, by SparseLU; RunError when Kt(fd,fd) is singular
+Eigen::VectorXd solveFree(const SpMat& Kt, const std::vector<int>& fd, const Eigen::VectorXd& rhs, int NRit);
+using FreeSolve = std::function<Eigen::VectorXd(const SpMat& Kt, const std::vector<int>& fd,
+                                                const Eigen::VectorXd& rhs, int NRit)>;  // solveFree, or another
+
 LinSolveOut linSolve(const std::vector<BC>& bc, const SpMat& Kt, const Eigen::VectorXd& oobf,
-                     int NRit, const std::vector<int>& fd);
+                     int NRit, const std::vector<int>& fd, const FreeSolve& solve = solveFree);
 
 }  // namespace ample

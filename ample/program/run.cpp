@@ -9,8 +9,8 @@
 //                (remedies/ghostPenalty.h), the implicit boundaries' K and f
 //                (boundaries/ibStiffness.h)
 //   detFDoFs     the lone-node rule (remedies/loneNodes.h; lone=1, the default)
-//   linSolve     the solver= choice with its analysis kept (solver/chosenSolve.h),
-//                also for SparseLU on large runs
+//   solveFree    linSolve's Kt(fd,fd) \ rhs by the solver= choice with its analysis kept
+//                (solver/chosenSolve.h), also for SparseLU on large runs
 //   detMPs       detMPsFast for large runs (opt.pointLoop), timed
 //   passTerms    the ghost penalty's and the boundaries' Kt, fint and reactions
 //   afterPass    progress, residuals.csv; a NaN or Inf stops the step
@@ -147,15 +147,13 @@ static Hooks runHooks(Analysis& an, RunLog& log, const RunOptions& opt, RunState
       return timed(T.detFDoFs, detFDoFs, mesh, mpData);
     };
   if (chosen)
-    h.linSolve = [&T, &x](const std::vector<BC>& bc, const SpMat& Kt, const Eigen::VectorXd& oobf, int NRit,
-                          const std::vector<int>& fd) {
-      return timed(T.linSolve, chosenSolve, x.Kff, bc, Kt, oobf, NRit, fd);
+    h.solveFree = [&T, &x](const SpMat& Kt, const std::vector<int>& fd, const Eigen::VectorXd& rhs, int NRit) {
+      return timed(T.linSolve, chosenSolveFree, x.Kff, Kt, fd, rhs, NRit);
     };
   else
-    h.linSolve = [&T, &x](const std::vector<BC>& bc, const SpMat& Kt, const Eigen::VectorXd& oobf, int NRit,
-                          const std::vector<int>& fd) {
-      if (NRit > 0 && !fd.empty()) x.Kff.builds++, x.Kff.factorisations++;  // SparseLU analyses every pass
-      return timed(T.linSolve, linSolve, bc, Kt, oobf, NRit, fd);
+    h.solveFree = [&T, &x](const SpMat& Kt, const std::vector<int>& fd, const Eigen::VectorXd& rhs, int NRit) {
+      x.Kff.builds++, x.Kff.factorisations++;                        // SparseLU analyses every pass
+      return timed(T.linSolve, solveFree, Kt, fd, rhs, NRit);
     };
   h.detMPs = [&T, pointLoop](const Eigen::VectorXd& uvw, std::vector<MaterialPoint>& mpData, Formulation form,
                              DetMPsOut& mps) { timed(T.detMPs, pointLoop, uvw, mpData, form, mps); };

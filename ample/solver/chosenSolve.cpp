@@ -154,33 +154,22 @@ static Eigen::VectorXd factorisedSolve(FreeSystem& S, const Eigen::VectorXd& rhs
 
 LinSolveOut chosenSolve(FreeSystem& S, const std::vector<BC>& bc, const SpMat& Kt, const Eigen::VectorXd& oobf,
                         int NRit, const std::vector<int>& fd) {
-  const int nDoF = int(oobf.size()), nfd = int(fd.size());
-  LinSolveOut out{Eigen::VectorXd::Zero(nDoF), Eigen::VectorXd::Zero(nDoF)};
-  if (NRit == 0) return out;  // first pass only builds Kt and fint
-  if (NRit == 1)
-    for (const BC& c : bc) out.duvw(c.dof) = c.value;  // prescribed increments
+  return linSolve(bc, Kt, oobf, NRit, fd, [&S](const SpMat& K, const std::vector<int>& f,
+                                               const Eigen::VectorXd& rhs, int pass) {
+    return chosenSolveFree(S, K, f, rhs, pass);
+  });
+}
 
-  const Eigen::VectorXd Kd = Kt * out.duvw;             // Kt(:,bc) duvw(bc)
-  if (nfd == 0) {                                       // every active dof is prescribed
-    for (const BC& c : bc) out.drct(c.dof) = Kd(c.dof) - oobf(c.dof);
-    return out;
-  }
-  refillFreeSystem(Kt, fd, S);                          // S.Kff = Kt(fd,fd) (fast part)
-
-  Eigen::VectorXd rhs(nfd);
-  for (int r = 0; r < nfd; ++r) rhs(r) = oobf(fd[r]) - Kd(fd[r]);
-
+Eigen::VectorXd chosenSolveFree(FreeSystem& S, const SpMat& Kt, const std::vector<int>& fd, const Eigen::VectorXd& rhs,
+                                int NRit) {
+  refillFreeSystem(Kt, fd, S);                          // S.Kff = Kt(fd,fd), the pattern kept
   const Eigen::VectorXd x = factorisedSolve(S, rhs, NRit);
   const double res = (S.Kff * x - rhs).norm(), scale = rhs.norm() + 1e-300;
   if (!(res <= 1e-3 * scale))                           // a zero pivot: no solution exists
     throw RunError("the stiffness Kt(fd,fd) is singular (linear solve residual " +
                    std::to_string(res / scale) + " of the right-hand side): a rigid-body mode "
                    "without enough boundary conditions, or a nearly empty cell", Failure::Singular);
-  for (int r = 0; r < nfd; ++r) out.duvw(fd[r]) = x(r);
-
-  const Eigen::VectorXd Ku = Kt * out.duvw;
-  for (const BC& c : bc) out.drct(c.dof) = Ku(c.dof) - oobf(c.dof);
-  return out;
+  return x;
 }
 
 }  // namespace ample

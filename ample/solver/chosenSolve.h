@@ -1,8 +1,8 @@
 //--------------------------------------------------------------------------
 // chosenSolve — linSolve with the solver= choice and the analysis kept
 //--------------------------------------------------------------------------
-// [AMPLE] eq 29, as linSolve (ample/linSolve.h): the same increments, the same
-// refusal of a singular Kt(fd,fd). Kt(fd,fd) is solved with the solver chosen
+// [AMPLE] eq 29: linSolve (ample/linSolve.h) with its solveFree replaced by
+// chosenSolveFree: the same refusal of a singular Kt(fd,fd). Kt(fd,fd) is solved with the solver chosen
 // by solver= (S.choice, freeSystem.h: SparseLU, LDLT, ...), and its pattern and
 // symbolic analysis are kept in S while fd and Kt's pattern stay the same
 // (SparseLU: the same factors as linSolve's, bit for bit). The program uses
@@ -17,7 +17,11 @@
 
 namespace ample {
 
+// linSolve with chosenSolveFree
 LinSolveOut chosenSolve(FreeSystem& S, const std::vector<BC>& bc, const SpMat& Kt, const Eigen::VectorXd& oobf,
                         int NRit, const std::vector<int>& fd);
+// solveFree's work by the chosen solver, the pattern and analysis kept in S
+Eigen::VectorXd chosenSolveFree(FreeSystem& S, const SpMat& Kt, const std::vector<int>& fd, const Eigen::VectorXd& rhs,
+                                int NRit);
 
 }  // namespace ample
