@@ -1,9 +1,7 @@
 //--------------------------------------------------------------------------
 // elemMPinfo — cells, nodes, basis functions and gradients of every point
 //--------------------------------------------------------------------------
-// [AMPLE] sec 4. Three passes over the points: their cells and number of
-// nodes; a slice of the basis arena each (roomForBasis); the nodes, basis
-// values and gradients into it. See elemMPinfo.h for inputs and outputs.
+// [AMPLE] sec 4. See elemMPinfo.h for inputs and outputs.
 //--------------------------------------------------------------------------
 #include "elemMPinfo.h"
 #include "ample/basis/MPMbasis.h"
@@ -98,17 +96,18 @@ static void meshCells(const Mesh& mesh, MaterialPoint& mp, size_t p, bool keepCe
   }
 }
 
-// pass 1 for point p: its cells (the grid's or a general mesh's) and how many nodes they have
-int pointCells(const Mesh& mesh, MaterialPoint& mp, size_t p, bool keepCells) {
+// point p's cells (the grid's or a general mesh's; p: its index, for messages)
+void pointCells(const Mesh& mesh, MaterialPoint& mp, size_t p, bool keepCells) {
   if (mesh.regular()) gridCells(mesh, mp, p, keepCells);
   else meshCells(mesh, mp, p, keepCells);
-  std::array<int, MAXN> nodes;
-  return nodesForMP(mesh, mp.eIN, mp.ne, nodes.data());
 }
 
-// pass 3 for a point with its slice of the arena: its nodes, S_vp and dS_vp
+// a point's nodes, S_vp and dS_vp (from its cells)
 void pointBasis(const Mesh& mesh, MaterialPoint& mp) {
-  nodesForMP(mesh, mp.eIN, mp.ne, mp.nIN.data());
+  mp.nIN.fill(0);
+  mp.nn = nodesForMP(mesh, mp.eIN, mp.ne, mp.nIN.data());
+  mp.Svp.fill(0.0);
+  mp.dSvp.setZero();
   if (mesh.regular()) MPMbasis(mesh, mp);
   else meshMPMbasis(mesh, mp);
   dropNullNodes(mp);
@@ -123,12 +122,10 @@ void markActiveCells(Mesh& mesh, const std::vector<MaterialPoint>& mpData) {
 
 void elemMPinfo(Mesh& mesh, std::vector<MaterialPoint>& mpData, bool keepCells) {
   if (!mesh.regular()) buildCellSearch(mesh);   // a setup may have moved the mesh's nodes
-  std::vector<int> nn(mpData.size());
-  for (size_t p = 0; p < mpData.size(); ++p)    // 1: each point's cells and how many nodes
-    nn[p] = pointCells(mesh, mpData[p], p, keepCells);
-  roomForBasis(mpData, nn);                     // 2: a slice of the arena each, nn set
-  for (MaterialPoint& mp : mpData)              // 3: the nodes, S_vp and dS_vp into it
-    pointBasis(mesh, mp);
+  for (size_t p = 0; p < mpData.size(); ++p) {  // the points
+    pointCells(mesh, mpData[p], p, keepCells);  // eIN, ne (elemForMP)
+    pointBasis(mesh, mpData[p]);                // nIN, nn (nodesForMP); Svp, dSvp (MPMbasis)
+  }
   markActiveCells(mesh, mpData);
 }
 

@@ -6,21 +6,15 @@
 // Indices are 0-based: node n owns the degrees of freedom 2n (x) and 2n+1 (y).
 // Stress and strain are 6-vectors in the order [xx yy zz xy yz zx]; strains
 // store engineering shear components (2 eps_xy, ...).
-// The basis of a point (nIN, Svp, dSvp: its nn nodes) is kept in a basis arena
-// shared by the points (basisArena.h), read through views as the arrays of
-// the paper; roomForBasis gives the points their slices (elemMPinfo once per
-// load step; a point built by hand, e.g. in a test, one of its own). A copy
-// of a point views the same slice (writing the copy's basis writes the
-// original's) until roomForBasis or elemMPinfo gives it its own. The
-// domain of a CPDI point (st0, st, xc) is kept on the heap for CPDI points
-// only (cpdi, empty for MPM and GIMP). So a GIMP point of the compaction
-// column costs 544 B and its 4-6 nodes 28 B each, not 1,088 B.
-// Inputs:  (types only) · roomForBasis: mpData, nodes per point
-// Outputs: MaterialPoint, CpdiDomain, Mesh, BC · roomForBasis: the points' views
-// Tests:   tests/test_basisArena.cpp
+// A point's basis (nIN, Svp, dSvp) is kept in fixed-size arrays of MAXN
+// nodes, of which the first nn are its own. The domain of a CPDI point
+// (st0, st, xc) is kept on the heap for CPDI points only (cpdi, empty for MPM
+// and GIMP).
+// Inputs:  (types only)
+// Outputs: MaterialPoint, CpdiDomain, Mesh, BC, Indirect
+// Tests:   tests/test_mpData.cpp
 //--------------------------------------------------------------------------
 #pragma once
-#include "basisArena.h"
 #include <Eigen/Dense>
 #include <Eigen/SparseCore>
 #include <array>
@@ -57,13 +51,37 @@ enum class DomainUpdate {                   // GIMP domain updating, [Lagrangian
 };  //  -     eq 32     eq 33    eq 34    eqs 35-37   eq 38      eq 39
 
 // [CPDI] sec 2: the domain of a CPDI point, a parallelogram (CPDI1) or a quadrilateral (CPDI2)
+// a value kept on the heap: a copy copies the value (unlike std::unique_ptr, like
+// C++26 std::indirect); empty until one is given, so an unused one costs one pointer
+template <class T>
+class Indirect {
+ public:
+  Indirect() = default;
+  Indirect(const T& value) : p_(new T(value)) {}
+  Indirect(const Indirect& o) : p_(o.p_ ? new T(*o.p_) : nullptr) {}
+  Indirect(Indirect&&) noexcept = default;
+  Indirect& operator=(const Indirect& o) {
+    if (o.p_ && p_) *p_ = *o.p_;             // both held: copy the value in place
+    else p_.reset(o.p_ ? new T(*o.p_) : nullptr);
+    return *this;
+  }
+  Indirect& operator=(Indirect&&) noexcept = default;
+  T* operator->() { return p_.get(); }
+  const T* operator->() const { return p_.get(); }
+  T& operator*() { return *p_; }
+  const T& operator*() const { return *p_; }
+  explicit operator bool() const { return p_ != nullptr; }
+ private:
+  std::unique_ptr<T> p_;
+};
+
 struct CpdiDomain {
   Eigen::Matrix2d st0 = Eigen::Matrix2d::Zero();  // CPDI1: original domain vectors s, t (columns)
   Eigen::Matrix2d st = Eigen::Matrix2d::Zero();   // CPDI1: current domain vectors s = F s0, t = F t0
   Eigen::Matrix<double, nD, 4> xc = Eigen::Matrix<double, nD, 4>::Zero();  // CPDI2: domain corners
 };
 
-struct MaterialPoint {                     // members ordered so that they pack: 544 bytes
+struct MaterialPoint {                     // members ordered so that they pack
   MpType mpType = MpType::GIMP;            // material point type
   CmType cmType = CmType::Elastic;         // constitutive model type
   double vp = 0, vp0 = 0;                  // current and original volume (eq 15)
@@ -73,10 +91,10 @@ struct MaterialPoint {                     // members ordered so that they pack:
   int nn = 0;                              // number of nodes linked to the point
   int ne = 0;                              // number of cells linked to the point
   std::array<int, MAXE> eIN{};             // cells linked to the point
-  BasisView<int> nIN;                      // nodes linked to the point: nIN[v], v < nn
-  BasisView<double> Svp;                   // basis functions S_vp: Svp[v]
-  GradientView dSvp;                       // dS_vp/dX~ (2 x nn): dSvp(j, v), dSvp.col(v)
-  std::shared_ptr<BasisArena> basis;       // the arena of nIN, Svp, dSvp (roomForBasis)
+  std::array<int, MAXN> nIN{};             // nodes linked to the point: nIN[v], v < nn
+  std::array<double, MAXN> Svp{};          // basis functions S_vp: Svp[v]
+  Eigen::Matrix<double, nD, MAXN> dSvp = Eigen::Matrix<double, nD, MAXN>::Zero();  // dS_vp/dX~:
+                                           // dSvp(j, v), dSvp.col(v), dSvp.leftCols(nn)
   Matrix3d Fn = Matrix3d::Identity();      // deformation gradient at start of load step
   Matrix3d F = Matrix3d::Identity();       // current deformation gradient (SS: stays I)
   Vector3d mCst = Vector3d::Zero();        // material constants [E, nu, rho_y]
@@ -89,14 +107,6 @@ struct MaterialPoint {                     // members ordered so that they pack:
   Vector2d lp0 = Vector2d::Zero();         // original domain half lengths
   Indirect<CpdiDomain> cpdi;               // CPDI points only: st0, st, xc (MPM, GIMP: empty)
 };
-
-// the room of the basis: point p gets a slice of nn[p] nodes (zeroed) in one arena
-// and mp.nn = nn[p]. The arena the points hold is reused (its capacity kept) when
-// no one else holds it, else a new one is made: copies of the points elsewhere keep
-// theirs. elemMPinfo calls it once per load step; mpData's order is the arena's.
-void roomForBasis(std::vector<MaterialPoint>& mpData, const std::vector<int>& nn);
-// the same for one point built by hand (a test, an example): an arena of its own
-void roomForBasis(MaterialPoint& mp, int nn);
 
 inline bool isCPDI(const MaterialPoint& mp) {
   return mp.mpType == MpType::CPDI1 || mp.mpType == MpType::CPDI2;

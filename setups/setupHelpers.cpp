@@ -92,15 +92,14 @@ std::string number(double v) {
 }
 
 void checkPointMemory(size_t points) {
-  const size_t basisPerNode = sizeof(int) + 3 * sizeof(double);    // nIN, Svp, dSvp (x, y): BasisArena
-  const size_t perPoint = sizeof(MaterialPoint) + 4 * basisPerNode;  // the fewest nodes a point links
+  const size_t perPoint = sizeof(MaterialPoint);                    // its basis inside
   const double need = double(points) * perPoint, have = availableBytes();
   if (have > 0 && need > have) {
     std::ostringstream msg;
     msg.precision(3);
     msg << "the run would need at least " << need / (1 << 30) << " GiB for its " << points
-        << " material points (" << perPoint << " bytes each: the point and its basis on the 4 nodes of "
-        << "its cell, before the stiffness and its factors), more than the " << have / (1 << 30)
+        << " material points (" << perPoint << " bytes each: the point with its basis, "
+        << "before the stiffness and its factors), more than the " << have / (1 << 30)
         << " GiB this machine has available: use fewer points (mp, a, nelsy, h)";
     throw InputError(msg.str());
   }

@@ -40,7 +40,7 @@ MaterialPoint pointOnAllNodes(const Mesh& mesh, MpType t, Vector2d x, Vector2d l
   mp.mpType = t;
   mp.mpC = x;
   mp.lp = (t == MpType::GIMP) ? l : Vector2d::Zero();
-  roomForBasis(mp, mesh.nodes());
+  mp.nn = mesh.nodes();
   for (int v = 0; v < mp.nn; ++v) mp.nIN[v] = v;
   return mp;
 }
@@ -338,7 +338,7 @@ TEST_SUITE("MPMbasis") {
     for (int i = 0; i < nD; ++i) {
       MaterialPoint p = pointOnAllNodes(mesh, MpType::GIMP, mp.mpC, mp.lp);  // a basis of their own
       MaterialPoint m = p;                                                  // (a copy shares it)
-      roomForBasis(m, mp.nn);
+      m.nn = mp.nn;
       for (int v = 0; v < mp.nn; ++v) m.nIN[v] = p.nIN[v];
       p.mpC(i) += e;
       m.mpC(i) -= e;
@@ -397,7 +397,7 @@ TEST_SUITE("MPMbasis") {
     MaterialPoint mp;
     mp.mpType = MpType::MPM;
     mp.mpC = Vector2d(0.62, 1.13);
-    roomForBasis(mp, 4);
+    mp.nn = 4;
     const int nodes[4] = {5, 6, 10, 9};
     for (int v = 0; v < 4; ++v) mp.nIN[v] = nodes[v];
     MPMbasis(mesh, mp);

@@ -11,7 +11,7 @@ namespace {
 // a point linked to nodes `nodes` with basis values `S` (summing to 1)
 MaterialPoint point(std::vector<int> nodes, std::vector<double> S, double m, Vector2d fp) {
   MaterialPoint mp;
-  roomForBasis(mp, int(nodes.size()));  // nn and room for the nodes and values
+  mp.nn = int(nodes.size());  // nn and room for the nodes and values
   for (int v = 0; v < mp.nn; ++v) {
     mp.nIN[v] = nodes[v];
     mp.Svp[v] = S[v];

@@ -55,7 +55,7 @@ TEST_SUITE("detFDoFs") {
     const std::array<int, 4> nodes[3] = {{6, 7, 11, 12}, {7, 8, 12, 13}, {18, 19, 23, 24}};
     for (int p = 0; p < 3; ++p) {      // standard MPM points, each linked to one cell's nodes
       pts[p].mpType = MpType::MPM;
-      roomForBasis(pts[p], 4);
+      pts[p].nn = 4;
       for (int v = 0; v < 4; ++v) pts[p].nIN[v] = nodes[p][v];
     }
     mesh.bc = {{dof(7, 0), 0.0}, {dof(23, 1), 0.1}, {dof(0, 1), 0.0}};  // node 0 is not linked
@@ -287,7 +287,7 @@ TEST_SUITE("detFDoFs") {
   MaterialPoint linkedTo(MpType t, std::vector<int> nodes) {
     MaterialPoint mp;
     mp.mpType = t;
-    roomForBasis(mp, int(nodes.size()));  // nn and room for the nodes
+    mp.nn = int(nodes.size());  // nn and room for the nodes
     for (int v = 0; v < mp.nn; ++v) mp.nIN[v] = nodes[v];
     return mp;
   }

@@ -261,7 +261,7 @@ TEST_SUITE("detMPs") {
     mp.cmType = CmType::Elastic;
     mp.mCst = m;
     mp.vp = mp.vp0 = V;
-    roomForBasis(mp, int(bx.at.size() * by.at.size()));  // nn and room for the basis
+    mp.nn = int(bx.at.size() * by.at.size());  // nn and room for the basis
     for (size_t b = 0; b < by.at.size(); ++b)
       for (size_t a = 0; a < bx.at.size(); ++a) {
         const int v = int(b * bx.at.size() + a);

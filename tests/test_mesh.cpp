@@ -290,8 +290,8 @@ TEST_SUITE("cellBasis") {
     const Mesh g = formCoord2D(3, 2, 1.5, 1.0), q = asQuads(g);
     MaterialPoint pg, pq;
     pg.mpType = pq.mpType = MpType::MPM;
-    roomForBasis(pg, MAXN);                   // room for any nodesForMP
-    roomForBasis(pq, MAXN);
+    pg.nn = MAXN;                   // room for any nodesForMP
+    pq.nn = MAXN;
     std::mt19937 gen(7);
     std::uniform_real_distribution<double> r(0.0, 1.0);
     double dS = 0, dG = 0;
@@ -484,7 +484,7 @@ TEST_SUITE("meshRefusals") {
     RunLog log;
     CHECK_THROWS_WITH_AS(solveRun(an, log), doctest::Contains("mpType=2 (GIMP)"), InputError);
     MaterialPoint mp = an.mpData[0];
-    roomForBasis(mp, MAXN);
+    mp.nn = MAXN;
     mp.ne = 1, mp.eIN[0] = findCell(an.mesh, mp.mpC), mp.nn = nodesForMP(an.mesh, mp.eIN, 1, mp.nIN.data());
     CHECK_THROWS_AS(meshMPMbasis(an.mesh, mp), InputError);
   }

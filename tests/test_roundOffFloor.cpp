@@ -51,7 +51,7 @@ TEST_SUITE("roundOffFloor") {
     // one point on nodes 0 and 1, dS/dX = (-1, 0.5) and (1, 0.5), V = 2, E = 3, nu = 0 (M = 3),
     // sig_max = 4; du: node 0 (0.5, -3), node 1 (1, 0); load (3, 4, 0, 0) -> |load + eps| = 5
     MaterialPoint mp;
-    roomForBasis(mp, 2);         // nn = 2 and room for the basis
+    mp.nn = 2;         // nn = 2 and room for the basis
     mp.nIN[0] = 0;
     mp.nIN[1] = 1;
     mp.dSvp.col(0) << -1, 0.5;

@@ -35,7 +35,7 @@ MaterialPoint point(MpType t, const Vector2d& x, const std::array<double, 4>& S,
   mp.vp = 0.07;
   mp.lp0 = (t == MpType::GIMP) ? Vector2d(0.125, 0.125) : Vector2d::Zero();
   mp.lp = mp.lp0;
-  roomForBasis(mp, 4);           // nn = 4 and room for the basis
+  mp.nn = 4;           // nn = 4 and room for the basis
   for (int v = 0; v < 4; ++v) {
     mp.nIN[v] = v;
     mp.Svp[v] = S[v];
@@ -134,7 +134,7 @@ TEST_SUITE("updateMPs") {
     mp.vp0 = 0.25;
     mp.vp = 0.3;
     mp.lp0 = mp.lp = (t == MpType::GIMP) ? Vector2d(0.25, 0.25) : Vector2d::Zero();
-    roomForBasis(mp, int(nodes.size()));
+    mp.nn = int(nodes.size());
     Vector2d x = Vector2d::Zero();
     for (int v = 0; v < mp.nn; ++v) {
       mp.nIN[v] = nodes[v];

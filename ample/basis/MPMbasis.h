@@ -15,7 +15,7 @@
 // S(v, c) = N_nIN[v](x_c) (SvpCPDI's Sc; the CPDI2 corner update; detFDoFs).
 // Inputs:  coord (nodes x 2) · mp.nIN, mp.nn, mp.mpC, mp.lp, mp.mpType (CPDI: mp.cpdi) · h (2)
 // Outputs: mp.Svp (nn) · mp.dSvp (2 x nn), gradients with respect to X~ (start of step),
-//          into the point's slice of the basis arena (elemMPinfo; by hand: roomForBasis)
+//          of its first nn entries (elemMPinfo; by hand: set mp.nn, mp.nIN)
 // Tests:   tests/test_basis.cpp
 //--------------------------------------------------------------------------
 #pragma once

@@ -1,9 +1,7 @@
 //--------------------------------------------------------------------------
 // nodesForMP — unique list of the nodes of the cells linked to a point
 //--------------------------------------------------------------------------
-// [AMPLE] table 1. nIN has room for the nodes: MAXN (a temporary), or the
-// point's slice of the basis arena once elemMPinfo knows how many (the same call
-// made before into a temporary: it returns nn).
+// [AMPLE] table 1. nIN has room for MAXN nodes (a point's nIN); it returns nn.
 // Inputs:  etpl (nels x 4, or x 3 for triangles) · eIN (ne cells)
 // Outputs: nIN (nn nodes, ascending) · number of nodes nn
 // Tests:   tests/test_grid.cpp

@@ -27,11 +27,9 @@ void assembleNodes(const SpMat& pattern, bool blocked, const MaterialPoint& mp, 
 }
 
 // asks for memory the loop will read soon while this point is computed: the cache lines
-// of the point after next (a MaterialPoint, sizeof 544) and the next point's slice of the
-// basis arena (its nIN, Svp, dSvp: 28 B a node), whose place that point, fetched one
-// turn earlier, now tells. Without it the loop waits for the first loads of each point
-// (perf, at 1,088 B a point: a quarter of addPoint's time; collapse a = 8, detMPs 25-35 %
-// faster with it, the same numbers)
+// of the point after next (a MaterialPoint with its basis). Without it the loop waits for
+// the first loads of each point (perf, at 1,088 B a point: a quarter of addPoint's time;
+// collapse a = 8, detMPs 25-35 % faster with it, the same numbers)
 void prefetchAhead(const std::vector<MaterialPoint>& mpData, int p, int end) {
 #if defined(__GNUC__)
   auto lines = [](const void* first, size_t bytes) {  // every 64-byte line of these bytes
@@ -40,12 +38,6 @@ void prefetchAhead(const std::vector<MaterialPoint>& mpData, int p, int end) {
     if (bytes > 0) __builtin_prefetch(b + bytes - 1);    // the last, when they straddle one more
   };
   if (p + 2 < end) lines(&mpData[p + 2], sizeof(MaterialPoint));
-  if (p + 1 < end) {
-    const MaterialPoint& next = mpData[p + 1];
-    lines(next.nIN.data(), next.nn * sizeof(int));
-    lines(next.Svp.data(), next.nn * sizeof(double));
-    lines(next.dSvp.data(), next.nn * nD * sizeof(double));
-  }
 #else
   (void)mpData, (void)p, (void)end;
 #endif

@@ -13,13 +13,11 @@ void elemMPinfoFast(Mesh& mesh, std::vector<MaterialPoint>& mpData, bool keepCel
   const int np = int(mpData.size()), nt = pointThreads(np);
   if (np < fastFrom()) return elemMPinfo(mesh, mpData, keepCells);  // small: the core's
   if (!mesh.regular()) buildCellSearch(mesh);
-  std::vector<int> nn(np);
-  forPointShares(np, nt, [&](int, int begin, int end) {         // 1
-    for (int p = begin; p < end; ++p) nn[p] = pointCells(mesh, mpData[p], p, keepCells);
-  });
-  roomForBasis(mpData, nn);                                     // 2
-  forPointShares(np, nt, [&](int, int begin, int end) {         // 3
-    for (int p = begin; p < end; ++p) pointBasis(mesh, mpData[p]);
+  forPointShares(np, nt, [&](int, int begin, int end) {
+    for (int p = begin; p < end; ++p) {
+      pointCells(mesh, mpData[p], p, keepCells);
+      pointBasis(mesh, mpData[p]);
+    }
   });
   markActiveCells(mesh, mpData);
 }

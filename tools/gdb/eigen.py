@@ -7,19 +7,16 @@
 #   p mp.sig    [6] {0, -400, 0, 0, 0, 0}
 #   p uvw       [130] {0, -1.2e-05, ...}   (the first 10 entries, then how many more)
 #   p Kt        SparseMatrix 130x130, 1156 stored entries
-#   p mp.nIN    {0, 1, 5, 6}                (the point's nn nodes, from the basis arena)
-#   p mp.Svp    {0.5625, 0.1875, 0.1875, 0.0625}
-#   p mp.dSvp   [2x4] {{-0.75, 0.75, -0.25, 0.25}, {-0.75, -0.25, 0.75, 0.25}}
+#   p mp.nIN    {0, 1, 5, 6, 0 <repeats 12 times>}   (the first nn = 4 are the point's nodes)
+#   p mp.Svp    {0.5625, 0.1875, 0.1875, 0.0625, 0 <repeats 12 times>}
+#   p mp.dSvp   [2x16] {{-0.75, 0.75, -0.25, 0.25, 0, 0, 0, 0, ...}, ...}
 #   p mp.eIN    {0, 1, 0 <repeats 7 times>}
 #   p mp.cpdi   none (MPM, GIMP), or the CPDI domain {st0 = [2x2] ..., st = ..., xc = [2x4] ...}
 #   pmat mp.D   the whole matrix, one row a line, aligned (the command below; mp.dSvp too)
 # Covers Eigen::Matrix and Eigen::Array of any scalar, fixed or dynamic size,
 # column- or row-major (Eigen 3.4's DenseStorage layout), SparseMatrix, std::array
-# (libstdc++'s printers have none: eIN shows as {0, 1, 0 <repeats 7 times>}), and the
-# point's own storage types (ample/basisArena.h): the views nIN, Svp, dSvp of its
-# slice of the basis arena, shown as its nn entries (nn is read from the point that
-# holds the view, found by the view's place in MaterialPoint), and Indirect<T> (the
-# CPDI domain). The arena a point shares (basis) shows as libstdc++ prints a shared_ptr.
+# (libstdc++'s printers have none: eIN shows as {0, 1, 0 <repeats 7 times>}), and
+# Indirect<T> (ample/mpData.h: the CPDI domain).
 # Load: gdb -x tools/gdb/eigen.py (tools/debug.sh does), or `source tools/gdb/eigen.py`.
 # Tests: tests/debug_recipe.sh (CTest debug.*)
 #--------------------------------------------------------------------------
@@ -103,83 +100,6 @@ class SparsePrinter:
         return "SparseMatrix %dx%d, %d stored entries" % (rows, cols, nnz)
 
 
-MAXN = 16                   # most nodes of a point (ample/mpData.h): a larger nn is no basis
-
-
-def owning_point(val):
-    """the MaterialPoint that holds the view val (a member of it), or None: the view's
-    address less the offset of the one member of MaterialPoint of the view's type"""
-    if val.address is None:
-        return None
-    try:
-        point = gdb.lookup_type("ample::MaterialPoint")
-    except gdb.error:
-        return None
-    name = val.type.strip_typedefs().unqualified().tag
-    for f in point.fields():
-        if f.type.strip_typedefs().unqualified().tag == name:
-            at = int(val.address.cast(gdb.lookup_type("long"))) - f.bitpos // 8
-            return gdb.Value(at).cast(point.pointer()).dereference()
-    return None
-
-
-def slice_of(val):
-    """(first, nn) of a view: its data pointer and the nn of its point; nn None when unknown"""
-    first = val["first_"]
-    point = owning_point(val)
-    nn = int(point["nn"]) if point is not None else None
-    return first, nn
-
-
-class BasisViewPrinter:
-    """`p mp.nIN`, `p mp.Svp`: the point's nn entries of the basis arena"""
-
-    def __init__(self, val):
-        self.val = val
-
-    def to_string(self):
-        try:
-            first, nn = slice_of(self.val)
-            if nn is None:
-                return "{first = %s} (nn unknown: not a member of a point)" % first
-            if int(first) == 0 or nn <= 0:
-                return "{}"
-            if nn > MAXN:
-                return "{first = %s} (nn = %d: no basis)" % (first, nn)
-            return "{" + ", ".join(number(first[v]) for v in range(nn)) + "}"
-        except gdb.MemoryError:
-            return "<unreadable: the basis arena of this point is gone>"
-
-
-class GradientCols:
-    """dSvp of a point, 2 x nn, read from the arena as Dense reads a matrix"""
-
-    def __init__(self, val):
-        self.data, nn = slice_of(val)
-        self.rows = 2
-        self.cols = nn if nn is not None and 0 <= nn <= MAXN and int(self.data) != 0 else 0
-        self.row_major = False
-
-    def at(self, i, j):
-        return self.data[2 * j + i]
-
-    def is_vector(self):
-        return False
-
-
-class GradientPrinter(DensePrinter):
-    """`p mp.dSvp`: [2xnn] {{dS/dX of each node}, {dS/dY of each node}}"""
-
-    def __init__(self, val):
-        self.m = GradientCols(val)
-
-    def to_string(self):
-        try:
-            return DensePrinter.to_string(self)
-        except gdb.MemoryError:
-            return "<unreadable: the basis arena of this point is gone>"
-
-
 class IndirectPrinter:
     """`p mp.cpdi`: the value held (the CPDI domain), or none"""
 
@@ -209,7 +129,6 @@ class StdArrayPrinter:
 DENSE = re.compile(r"^Eigen::(Matrix|Array)<.*>$")
 SPARSE = re.compile(r"^Eigen::SparseMatrix<.*>$")
 STDARRAY = re.compile(r"^std::(__1::)?array<.*>$")
-BASISVIEW = re.compile(r"^ample::BasisView<.*>$")
 INDIRECT = re.compile(r"^ample::Indirect<.*>$")
 
 
@@ -226,10 +145,6 @@ def lookup(val):
         return SparsePrinter(val)
     if STDARRAY.match(name) and "_M_elems" in [f.name for f in t.strip_typedefs().fields()]:
         return StdArrayPrinter(val)
-    if BASISVIEW.match(name):
-        return BasisViewPrinter(val)
-    if name == "ample::GradientView":
-        return GradientPrinter(val)
     if INDIRECT.match(name):
         return IndirectPrinter(val)
     return None
@@ -245,8 +160,7 @@ class PrintMatrix(gdb.Command):
         val = gdb.parse_and_eval(arg)
         if val.type.code == gdb.TYPE_CODE_REF:
             val = val.referenced_value()
-        gradient = val.type.strip_typedefs().unqualified().tag == "ample::GradientView"
-        m = GradientCols(val) if gradient else Dense(val)
+        m = Dense(val)
         cells = [[number(m.at(i, j)) for j in range(m.cols)] for i in range(m.rows)]
         width = max((len(c) for row in cells for c in row), default=1)
         print("%s = [%dx%d]" % (arg, m.rows, m.cols))
