@@ -26,9 +26,8 @@ struct PointTerms {                          // what eqs 14 and 16 need of one p
 // start + grad du, grad du = sum_v du_v (x) dS_v/dX~ (in-plane block): dF with
 // start = I (eq 17); grad du itself with start = 0 (SS: no 1 + small - 1)
 Matrix3d plusGradDu(Matrix3d start, const Eigen::VectorXd& uvw, const MaterialPoint& mp) {
-  for (int v = 0; v < mp.nn; ++v)
-    for (int i = 0; i < nD; ++i)
-      for (int j = 0; j < nD; ++j) start(i, j) += uvw(dof(mp.nIN[v], i)) * mp.dSvp(j, v);
+  for (int v = 0; v < mp.nn; ++v)                               // du_v (x) dS_v/dX~, node v's dofs
+    start.topLeftCorner<2, 2>() += uvw.segment<nD>(nD * mp.nIN[v]) * mp.dSvp.col(v).transpose();
   return start;
 }
 

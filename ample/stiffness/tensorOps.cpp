@@ -46,34 +46,37 @@ InPlaneEigen inPlaneEigen(const Matrix3d& A) {
   return {es.eigenvalues(), es.eigenvectors(), A(2, 2)};
 }
 
-template <class Fn>
-static Matrix3d symFunction(const InPlaneEigen& e, Fn f) {
-  const Eigen::Vector2d d = e.lam.unaryExpr(f);
+// n diag(d) n' in the plane, d33 out of it: the tensor with A's in-plane eigenvectors n
+// and the values d, d33 (f of A's eigenvalues)
+static Matrix3d fromEigen(const InPlaneEigen& e, const Eigen::Vector2d& d, double d33) {
   Matrix3d R = Matrix3d::Zero();
   R.topLeftCorner<2, 2>() = e.n * d.asDiagonal() * e.n.transpose();
-  R(2, 2) = f(e.zz);
+  R(2, 2) = d33;
   return R;
 }
 
-template <class Fn>
-static Matrix3d symFunction(const Matrix3d& A, Fn f) {
-  if (A(0, 2) == 0.0 && A(1, 2) == 0.0 && A(2, 0) == 0.0 && A(2, 1) == 0.0)
-    return symFunction(inPlaneEigen(A), f);
-  Eigen::SelfAdjointEigenSolver<Matrix3d> es(A);
-  const Vector3d d = es.eigenvalues().unaryExpr(f);
+Matrix3d symExp(const Matrix3d& A) {
+  if (A(0, 2) == 0.0 && A(1, 2) == 0.0 && A(2, 0) == 0.0 && A(2, 1) == 0.0) {  // in plane
+    const InPlaneEigen e = inPlaneEigen(A);
+    return fromEigen(e, Eigen::Vector2d(std::exp(e.lam(0)), std::exp(e.lam(1))), std::exp(e.zz));
+  }
+  Eigen::SelfAdjointEigenSolver<Matrix3d> es(A);         // a full 3 x 3 tensor
+  const Vector3d lam = es.eigenvalues();
+  const Vector3d d(std::exp(lam(0)), std::exp(lam(1)), std::exp(lam(2)));
   return es.eigenvectors() * d.asDiagonal() * es.eigenvectors().transpose();
 }
 
-Matrix3d symExp(const Matrix3d& A) {
-  return symFunction(A, [](double x) { return std::exp(x); });
-}
-
 Matrix3d symLog(const Matrix3d& A) {
-  return symFunction(A, [](double x) { return std::log(x); });
+  if (A(0, 2) == 0.0 && A(1, 2) == 0.0 && A(2, 0) == 0.0 && A(2, 1) == 0.0)  // in plane
+    return symLog(inPlaneEigen(A));
+  Eigen::SelfAdjointEigenSolver<Matrix3d> es(A);         // a full 3 x 3 tensor
+  const Vector3d lam = es.eigenvalues();
+  const Vector3d d(std::log(lam(0)), std::log(lam(1)), std::log(lam(2)));
+  return es.eigenvectors() * d.asDiagonal() * es.eigenvectors().transpose();
 }
 
 Matrix3d symLog(const InPlaneEigen& e) {
-  return symFunction(e, [](double x) { return std::log(x); });
+  return fromEigen(e, Eigen::Vector2d(std::log(e.lam(0)), std::log(e.lam(1))), std::log(e.zz));
 }
 
 Matrix3d stretchTensor(const Matrix3d& F) {
