@@ -4,7 +4,7 @@
 // runHooks connects the extensions to solve()'s hooks (ample/hooks.h), each
 // only where the analysis asks for it:
 //   startStep    progress line, step clock, the setup's beforeStep
-//   elemMPinfo   elemMPinfoFast for large runs (opt.basisLoop), timed
+//   elemMPinfo   elemMPinfoFast for large runs (opt.basisLoop; not in a Debug build), timed
 //   stepTerms    the body force (detBodyForce), the ghost penalty of the step
 //                (remedies/ghostPenalty.h), the implicit boundaries' K and f
 //                (boundaries/ibStiffness.h)
@@ -119,7 +119,11 @@ void solveRun(Analysis& an, RunLog& log, const RunOptions& opt) {
 static Hooks runHooks(Analysis& an, RunLog& log, const RunOptions& opt, RunState& x, const Hooks& self) {
   Hooks h;
   Timers& T = log.t;
+#ifdef NDEBUG
   const bool large = an.mpData.size() >= size_t(fastFrom());         // chosen once, for the run
+#else
+  const bool large = false;        // a Debug build, to step through: the core's loops at every size
+#endif
   const BasisLoop basisLoop = large ? opt.basisLoop : elemMPinfo;
   const PointLoop pointLoop = large ? opt.pointLoop : PointLoop(detMPs);
   x.Kff.choice = an.solver;                                          // SparseLU, or LDLT if symmetric

@@ -33,7 +33,8 @@ struct RunOptions {
   bool acceptFloor = false;  // accept a step whose residual stalled at its round-off floor
                              // (--accept-floor; ample/solver/roundOffFloor.h)
   // the loops over points of a large run (ample/fast/: elemMPinfoFast, detMPsFast; the same
-  // numbers, faster), chosen once for runs of pointsPerThread() points or more; the core's by default
+  // numbers, faster), chosen once for runs of pointsPerThread() points or more in an optimised
+  // build (a Debug build, to step through, runs the core's at every size); the core's by default
   BasisLoop basisLoop = elemMPinfo;
   PointLoop pointLoop = detMPs;
 };
