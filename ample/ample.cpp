@@ -3,8 +3,9 @@
 //--------------------------------------------------------------------------
 // [AMPLE] fig 4. solve is the load-step loop, loadStep one load step: the
 // basis, the loads, the free dofs, the Newton-Raphson loop (eqs 29-35) and
-// the point update. Each line marked "hook" is where an extension joins
-// (hooks.h); a plain run's hooks are empty or the core functions.
+// the point update. Each "hooks." call is where an extension joins (hooks.h);
+// a plain run's hooks are the core functions (elemMPinfo, detFDoFs, solveFree,
+// detMPs, checkConverged) or empty and skipped (those marked "hook:").
 //--------------------------------------------------------------------------
 #include "ample.h"
 #include "detExtForce.h"
@@ -14,11 +15,13 @@
 
 namespace ample {
 
+static void checkHooks(const Analysis& an, const Hooks& hooks);
 static std::vector<BC> scaled(std::vector<BC> bc, double factor);
 static double normalisedResidual(const Eigen::VectorXd& oobf, const Eigen::VectorXd& fext,
                                  const Eigen::VectorXd& frct, const Eigen::VectorXd& frctLast, int NRit);
 
 void solve(Analysis& an, const Hooks& hooks) {
+  checkHooks(an, hooks);                                            // what an needs is there
   for (int lstp = 1; lstp <= an.lstps; ++lstp) {                    // load steps
     const Increment inc{lstp, double(lstp - 1) / an.lstps, double(lstp) / an.lstps};
     if (hooks.startStep) hooks.startStep(an, inc);                  // hook: progress
@@ -26,7 +29,7 @@ void solve(Analysis& an, const Hooks& hooks) {
       loadStep(an, inc, hooks);                                     // below
     } catch (const RunError& e) {                                   // not converged, singular
       if (!hooks.failedStep) throw;                                 // the paper: the run stops
-      hooks.failedStep(an, inc, e);                                 // hook: retry (remedies)
+      hooks.failedStep(an, inc, e, hooks);                          // hook: retry (remedies)
     }
     if (hooks.endStep) hooks.endStep(an, inc);                      // hook: postPro, log
   }
@@ -39,9 +42,10 @@ void loadStep(Analysis& an, const Increment& inc, const Hooks& hooks) {
   hooks.elemMPinfo(mesh, mpData, an.fem);                           // basis functions
   Eigen::VectorXd fext = detExtForce(nDoF, an.g, mpData) * inc.lf1; // external force
   if (hooks.stepTerms) hooks.stepTerms(an, inc, fext);              // hook: body force, ...
-  const std::vector<BC> bc = scaled(mesh.bc, (inc.lf1 - inc.lf0) * an.lstps);  // the step's share
+  const std::vector<BC> bc = scaled(mesh.bc, inc.share);            // the step's increments
   const std::vector<int> fd = hooks.detFDoFs(mesh, mpData);         // free dofs
-  Eigen::VectorXd uvw = Eigen::VectorXd::Zero(nDoF), frct = uvw, fbnd = uvw, oobf = fext;
+  Eigen::VectorXd uvw = Eigen::VectorXd::Zero(nDoF), frct = Eigen::VectorXd::Zero(nDoF);
+  Eigen::VectorXd fbnd = Eigen::VectorXd::Zero(nDoF), oobf = fext;  // (fbnd: the hooks' reactions)
   DetMPsOut mps;                                                    // fint, Kt
   double fErr = 1.0;
   int NRit = 0;
@@ -70,6 +74,17 @@ void checkConverged(const Analysis& an, const Increment& inc, int NRit, double f
   std::snprintf(msg, sizeof msg, "load step %d did not converge: fErr = %.3e > tol = %.1e after %d "
                 "Newton-Raphson passes (NRitMax = %d)", inc.lstp, fErr, an.tol, NRit, an.NRitMax);
   throw NewtonFailure(msg, Failure::NotConverged);
+}
+
+// an analysis that asks for an extension (a setup's beforeStep or afterStep, a body force,
+// the finite element mode, implicit boundaries, a remedy) runs only with the program's hooks
+// (solveRun, ample/program/run.h): refused here, not solved wrongly without them
+static void checkHooks(const Analysis& an, const Hooks& hooks) {
+  const bool needs = an.beforeStep || an.afterStep || an.bodyForce || an.fem || !an.boundaries.empty() ||
+                     an.ghost > 0 || an.substeps > 0 || an.split > 0;
+  if (needs && !(hooks.startStep && hooks.stepTerms && hooks.afterUpdate && hooks.failedStep && hooks.endStep))
+    throw InputError(an.name + ": this analysis needs the program's hooks (a setup's beforeStep/afterStep, "
+                     "bodyForce, fem, boundaries, ghost, substeps or split): run it with solveRun");
 }
 
 // the prescribed increments of this step (or of a part of it)

@@ -23,9 +23,8 @@ namespace ample {
 struct Increment {              // load step lstp, or a part of it, from load factor lf0 to lf1
   int lstp = 1;
   double lf0 = 0, lf1 = 1;
+  double share = 1;             // its share of the step's prescribed increments (1: the whole step)
   int depth = 0;                // halvings so far (0: the whole step; remedy substeps=)
-  bool first = true;            // the first attempt at its load step (not a half, not a retry)
-  bool last = true;             // it ends its load step
   std::string withoutGhost;     // the failure without the ghost penalty, if retried with it
 };
 
@@ -34,10 +33,14 @@ struct Increment {              // load step lstp, or a part of it, from load fa
 void checkConverged(const Analysis& an, const Increment& inc, int NRit, double fErr,
                     const Eigen::VectorXd& uvw, const Eigen::VectorXd& load);
 
+struct Hooks;
+
 struct Hooks {
   // solve(): the load steps
   std::function<void(Analysis& an, const Increment& inc)> startStep;        // progress, setup's beforeStep
-  std::function<void(Analysis& an, const Increment& inc, const RunError& e)> failedStep;  // retries (empty: stop)
+  std::function<void(Analysis& an, const Increment& inc, const RunError& e, const Hooks& hooks)>
+      failedStep;                                                            // retries (empty: stop); it
+                                                                            // solves the step or throws
   std::function<void(Analysis& an, const Increment& inc)> endStep;          // setup's afterStep, postPro, log
   // loadStep(): the functions of fig 4, each replaced as a whole or kept
   std::function<void(Mesh&, std::vector<MaterialPoint>&, bool keepCells)> elemMPinfo = ample::elemMPinfo;

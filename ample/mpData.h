@@ -33,7 +33,7 @@ using Eigen::Vector3d;
 
 constexpr int nD = 2;        // spatial dimensions of the background grid
 constexpr int nen = 4;       // most nodes per cell (bi-linear quadrilateral; a triangle has 3)
-constexpr int MAXN = 16;     // most nodes one point may influence (4 x 4): room of temporaries
+constexpr int MAXN = 16;     // most nodes one point may influence (4 x 4): its basis arrays
 constexpr int MAXE = 9;      // most cells one point domain may overlap (3 x 3)
 
 enum class MpType { MPM = 1, GIMP = 2, CPDI1 = 3, CPDI2 = 4 };  // [AMPLE]: mpType (+ [CPDI])

@@ -39,9 +39,8 @@ Analysis baseAnalysis(const Params& P);
 // a parameter value as the command line takes it, e.g. number(32) = "32", number(0.01) = "0.01"
 std::string number(double v);
 
-// InputError before any work when `points` material points (sizeof(MaterialPoint) and the
-// basis of 4 nodes each, the least a point holds: ample/basisArena.h) exceed the memory this
-// machine has available
+// InputError before any work when `points` material points (sizeof(MaterialPoint) each, its
+// basis inside) exceed the memory this machine has available
 void checkPointMemory(size_t points);
 void fillBlock(std::vector<MaterialPoint>& mpData, const Vector2d& corner, int nelsx, int nelsy,
                const Vector2d& h, const Params& P, double rho);

@@ -395,3 +395,17 @@ TEST_SUITE("ample") {
     CHECK(passes >= 2 * an.lstps);                                  // NRit < 2: two passes at least
   }
 }
+
+TEST_SUITE("ample") {
+  TEST_CASE("solve: the core alone refuses an analysis that needs the program's hooks (a setup's beforeStep: the stretch) with an InputError naming solveRun") {
+    const Setup* s = findSetup("stretch");
+    Analysis an = s->setupGrid(s->params());
+    an.name = "stretch";
+    REQUIRE(an.beforeStep);                                          // the stretch sets its bcs there
+    CHECK_THROWS_WITH_AS(solve(an), doctest::Contains("run it with solveRun"), InputError);
+    RunLog log;
+    Analysis again = s->setupGrid(s->params());
+    CHECK_NOTHROW(solveRun(again, log));
+    CHECK(log.converged);
+  }
+}

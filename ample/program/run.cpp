@@ -59,7 +59,7 @@ struct RunState {
 struct LastStepDone {};            // opt.lastStep reached (solveRun stops there)
 
 // helpers of this page (defined below it): bookkeeping, not algorithm
-static Hooks runHooks(Analysis& an, RunLog& log, const RunOptions& opt, RunState& x, const Hooks& self);
+static Hooks runHooks(Analysis& an, RunLog& log, const RunOptions& opt, RunState& x);
 static void checkAnalysis(const Analysis& an);
 static std::string looseTolWarning(const Analysis& an);
 static int lstpsMax(const Params& P);
@@ -106,17 +106,15 @@ int ample(const Setup& setup, const Params& P, const RunOptions& opt) {
 
 void solveRun(Analysis& an, RunLog& log, const RunOptions& opt) {
   RunState x;
-  Hooks hooks;
-  hooks = runHooks(an, log, opt, x, hooks);                          // (failedStep calls loadStep with them)
+  const Hooks hooks = runHooks(an, log, opt, x);
   try {
     solve(an, hooks);
   } catch (const LastStepDone&) {                                    // the tests' opt.lastStep
   }
 }
 
-// the hooks of this run (the list at the top of the page); self: the hooks object they
-// end up in, which the retries hand back to loadStep
-static Hooks runHooks(Analysis& an, RunLog& log, const RunOptions& opt, RunState& x, const Hooks& self) {
+// the hooks of this run (the list at the top of the page)
+static Hooks runHooks(Analysis& an, RunLog& log, const RunOptions& opt, RunState& x) {
   Hooks h;
   Timers& T = log.t;
 #ifdef NDEBUG
@@ -139,7 +137,7 @@ static Hooks runHooks(Analysis& an, RunLog& log, const RunOptions& opt, RunState
     if (a.bodyForce) fext += timed(T.detExtForce, detBodyForce, int(fext.size()), a.bodyForce, inc.lf1, a.mpData);
     x.Kgp = ghostPenaltyOf(a);                                       // remedy (off: empty)
     if (!a.boundaries.empty())                                       // [Boundaries]: K_IB, f_IB
-      x.ib = ibStiffness(a.mesh, a.boundaries, a.mpData, inc.lstp, (inc.lf1 - inc.lf0) * a.lstps);
+      x.ib = ibStiffness(a.mesh, a.boundaries, a.mpData, inc.lstp, inc.share);
     x.NRit = 0, x.fErr = 1.0;
   };
   if (an.lone)
@@ -175,23 +173,23 @@ static Hooks runHooks(Analysis& an, RunLog& log, const RunOptions& opt, RunState
                                       const Eigen::VectorXd& uvw, const Eigen::VectorXd& load) {
     explainFailure(a, log, inc.lstp, NRit, fErr, uvw, load, opt.acceptFloor);  // fErr > tol: throws
     checkNotInverted(a.mpData, inc.lstp, fErr);                      // det F <= 0 accepted: throws
+    recordStep(log, inc, NRit, fErr, x.Kff, true);                   // converged: its steps.csv row
     x.gap.lap();                                                     // updateMPs from here
   };
-  h.afterUpdate = [&log, &x, &opt, &T](Analysis& a, const Increment& inc, int NRit, double fErr) {
+  h.afterUpdate = [&log, &x, &opt, &T](Analysis& a, const Increment& inc, int /*NRit*/, double /*fErr*/) {
     T.updateMPs += x.gap.lap();
-    recordStep(log, inc, NRit, fErr, x.Kff, true);
     if (a.fem) moveMesh(a.mesh, a.uvw);                              // FEM: the mesh follows (MPM: reset)
     if (!a.boundaries.empty()) {                                     // [Boundaries]: forces, motion by du
       a.ibForce = boundaryForces(x.ib, a.uvw, int(a.boundaries.size()));
-      moveBoundaries(a.boundaries, inc.lstp, (inc.lf1 - inc.lf0) * a.lstps);
+      moveBoundaries(a.boundaries, inc.lstp, inc.share);
     }
     if (a.split > 0) log.splits += splitPoints(a.mesh, a.split, a.mpData, opt.quiet);  // remedy
   };
-  h.failedStep = [&log, &x, &opt, &self](Analysis& a, const Increment& inc, const RunError& e) {
+  h.failedStep = [&log, &x, &opt](Analysis& a, const Increment& inc, const RunError& e, const Hooks& hooks) {
     if (e.kind == Failure::Other || e.kind == Failure::LeftGrid || e.kind == Failure::DomainTooLarge)
       throw;                                                         // not the Newton loop's: stop
     recordStep(log, inc, x.NRit, x.fErr, x.Kff, false);
-    retryStep(a, inc, e, self, opt.quiet);                           // remedies (off: rethrows e)
+    retryStep(a, inc, e, hooks, opt.quiet);                          // remedies (off: throws e)
   };
   h.endStep = [&log, &opt, &T](Analysis& a, const Increment& inc) {
     if (a.afterStep) a.afterStep(a, inc.lstp);                       // setup's hook

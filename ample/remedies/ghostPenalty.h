@@ -12,7 +12,7 @@
 // F (2-point Gauss along F), E the largest Young's modulus of the points. The
 // penalty acts on the displacement increment of the step: fint += K_gp uvw.
 // Off (gamma = 0) by default, so the paper's algorithm is unchanged. With gamma > 0
-// it is used only from the first load step that fails without it (LoadSteps::retry
+// it is used only from the first load step that fails without it (retryStep
 // switches it on, Analysis::ghostFrom): the nearly free nodes of barely touched
 // cells (stiffness ~1e-12 E) are pinned by any gamma E above their stiffness, which
 // moved a converging run's answer by up to 0.6 % for gamma >= 1e-8 and stopped the

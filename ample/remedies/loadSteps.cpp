@@ -15,7 +15,8 @@ static void attempt(Analysis& an, const Increment& inc, const Hooks& hooks) {
   try {
     loadStep(an, inc, hooks);
   } catch (const RunError& e) {
-    hooks.failedStep(an, inc, e);
+    if (!hooks.failedStep) throw;
+    hooks.failedStep(an, inc, e, hooks);
   }
 }
 
@@ -29,7 +30,6 @@ void retryStep(Analysis& an, const Increment& inc, const RunError& e, const Hook
     restoreConverged(an.mpData);
     if (!quiet) std::printf("  %s: retrying with the ghost penalty\n", e.what());
     Increment again = inc;
-    again.first = false;
     again.withoutGhost = e.what();
     return attempt(an, again, hooks);
   }
@@ -37,8 +37,8 @@ void retryStep(Analysis& an, const Increment& inc, const RunError& e, const Hook
   restoreConverged(an.mpData);                                    // remedy 2: halves
   if (!quiet) std::printf("  %s: retrying with half the increment\n", failure.c_str());
   const double mid = 0.5 * (inc.lf0 + inc.lf1);
-  attempt(an, {inc.lstp, inc.lf0, mid, inc.depth + 1, false, false, ""}, hooks);     // first half
-  attempt(an, {inc.lstp, mid, inc.lf1, inc.depth + 1, false, inc.last, ""}, hooks);  // second half
+  attempt(an, {inc.lstp, inc.lf0, mid, inc.share / 2, inc.depth + 1, ""}, hooks);  // first half
+  attempt(an, {inc.lstp, mid, inc.lf1, inc.share / 2, inc.depth + 1, ""}, hooks);  // second half
 }
 
 static std::string smallerSteps(const Analysis& an, int lstpsMax) {

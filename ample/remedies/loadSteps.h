@@ -3,7 +3,7 @@
 //--------------------------------------------------------------------------
 // [AMPLE] sec 3.2: the load is applied in lstps equal steps (solve). With
 // ghost = 0 and substeps = 0 (the paper's algorithm, the default) retryStep
-// rethrows a failure, which stops the run. Otherwise it restores the converged
+// throws the failure (as NewtonFailure), which stops the run. Otherwise it restores the converged
 // state (restoreConverged) and solves the step again (loadStep):
 //   ghost > 0 (first): the same increment with the ghost penalty, which stays
 //                      on from this load step to the end (an.ghostFrom);

@@ -85,7 +85,7 @@ struct FreeSystem {
 #endif
   int builds = 0, fallbacks = 0;               // analyses run; symmetric passes solved by LU
   std::string notes;                           // lines for stderr (the first LU fallback), taken
-                                               // by the run's log (ample.cpp recordStep)
+                                               // by the run's log (program/run.cpp recordStep)
   bool factorHeld = false;                     // KRYLOV: ldlt or lu holds a factor of this step
   bool factorSymmetric = false;                // KRYLOV: that factor is ldlt's (Kff was symmetric)
   int krylovMaxIt = 30;                        // KRYLOV: iterations before it refactorises
