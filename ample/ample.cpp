@@ -5,7 +5,7 @@
 // basis, the loads, the free dofs, the Newton-Raphson loop (eqs 29-35) and
 // the point update. Each "hooks." call is where an extension joins (hooks.h);
 // a plain run's hooks are the core functions (elemMPinfo, detFDoFs, solveFree,
-// detMPs, checkConverged) or empty and skipped (those marked "hook:").
+// detMPs, checkConverged, updateGIMPDomain) or empty and skipped (those marked "hook:").
 //--------------------------------------------------------------------------
 #include "ample.h"
 #include "detExtForce.h"
@@ -63,7 +63,7 @@ void loadStep(Analysis& an, const Increment& inc, const Hooks& hooks) {
   hooks.checkConverged(an, inc, NRit, fErr, uvw, fext + frct + fbnd);  // fErr > tol: throws
   an.frct = frct + fbnd;                                            // reactions
   an.uvw = uvw;
-  updateMPs(mesh, uvw, an.domainUpdate, mpData);                    // points, mesh reset
+  updateMPs(mesh, uvw, mpData, hooks.updateDomain);                 // points, mesh reset
   if (hooks.afterUpdate) hooks.afterUpdate(an, inc, NRit, fErr);    // hook: FE mode, split, log
 }
 
@@ -77,14 +77,17 @@ void checkConverged(const Analysis& an, const Increment& inc, int NRit, double f
 }
 
 // an analysis that asks for an extension (a setup's beforeStep or afterStep, a body force,
-// the finite element mode, implicit boundaries, a remedy) runs only with the program's hooks
-// (solveRun, ample/program/run.h): refused here, not solved wrongly without them
+// the finite element mode, implicit boundaries, a remedy, CPDI points or another domain
+// update) runs only with the program's hooks (solveRun, ample/program/run.h): refused
+// here, not solved wrongly without them
 static void checkHooks(const Analysis& an, const Hooks& hooks) {
-  const bool needs = an.beforeStep || an.afterStep || an.bodyForce || an.fem || !an.boundaries.empty() ||
-                     an.ghost > 0 || an.substeps > 0 || an.split > 0;
+  bool needs = an.beforeStep || an.afterStep || an.bodyForce || an.fem || !an.boundaries.empty() ||
+               an.ghost > 0 || an.substeps > 0 || an.split > 0 || an.domainUpdate != DomainUpdate::Uii;
+  for (const MaterialPoint& mp : an.mpData) needs = needs || isCPDI(mp);
   if (needs && !(hooks.startStep && hooks.stepTerms && hooks.afterUpdate && hooks.failedStep && hooks.endStep))
     throw InputError(an.name + ": this analysis needs the program's hooks (a setup's beforeStep/afterStep, "
-                     "bodyForce, fem, boundaries, ghost, substeps or split): run it with solveRun");
+                     "bodyForce, fem, boundaries, ghost, substeps, split, CPDI or domainUpdate): run it "
+                     "with solveRun");
 }
 
 // the prescribed increments of this step (or of a part of it)

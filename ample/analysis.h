@@ -37,8 +37,10 @@ struct Analysis {
                                       // point that leaves the grid: what to try; "" none)
   double ghost = 0;                   // ghost-penalty factor of the edge cells (0: none)
   double split = 0;                   // split GIMP points with lp(i) > split h(i) after a step (0: none)
-  bool lone = true;                   // leave redundant lone-node dofs out of fd (detFDoFsLone)
+  int lone = 2;                       // redundant lone-node dofs out of fd (detFDoFsLone): 0 never,
+                                      // 1 every step, 2 from the first step that fails without it
   int ghostFrom = 0;                  // first load step the penalty was needed (0: not yet)
+  int loneFrom = 0;                   // first load step the lone-node rule was needed (0: not yet)
   Formulation formulation = Formulation::UL;        // frame of equilibrium ([Lagrangian])
   DomainUpdate domainUpdate = DomainUpdate::Uii;    // GIMP domain update ([AMPLE] eq 34)
   bool fem = false;                   // finite element mode: the mesh moves with the nodes (moveMesh)

@@ -15,6 +15,7 @@
 #include "elemMPinfo.h"
 #include "errors.h"
 #include "linSolve.h"
+#include "updateMPs.h"
 #include <functional>
 #include <string>
 
@@ -25,7 +26,8 @@ struct Increment {              // load step lstp, or a part of it, from load fa
   double lf0 = 0, lf1 = 1;
   double share = 1;             // its share of the step's prescribed increments (1: the whole step)
   int depth = 0;                // halvings so far (0: the whole step; remedy substeps=)
-  std::string withoutGhost;     // the failure without the ghost penalty, if retried with it
+  std::string earlier{};        // how this step failed before a remedy came on (ghost=, lone=), e.g.
+                                //   "; with the lone-node rule; without it: ..." ("" none)
 };
 
 // the core's convergence check (ample.cpp): fErr > tol, or not a number, throws NewtonFailure
@@ -56,6 +58,7 @@ struct Hooks {
                                                                             // a NaN stops the step
   std::function<void(const Analysis& an, const Increment& inc, int NRit, double fErr, const Eigen::VectorXd& uvw,
                      const Eigen::VectorXd& load)> checkConverged = ample::checkConverged;  // or a diagnosis
+  UpdateDomain updateDomain = ample::updateGIMPDomain;                      // updateMPs' domains (eq 34)
   std::function<void(Analysis& an, const Increment& inc, int NRit, double fErr)> afterUpdate;  // FE mode,
                                                                             // boundaries, split, log
 };

@@ -4,12 +4,15 @@
 // [AMPLE] sec 3.4:
 //   x_p = X~_p + sum_v S_vp du_v     (eq 33), also the total displacement u
 //   V_p = det(F) V_p^0               (eq 15)
-//   domains: updateDomain (GIMP eq 34 by default, or [Lagrangian] eqs 32-39;
-//            CPDI1/CPDI2 of [CPDI]), nothing for standard MPM points
+//   l_p,i = l_p0,i U_ii, U = sqrt(F'F)   (eq 34, updateGIMPDomain: GIMP points;
+//                                     standard MPM points have no domain)
 //   Fn = F, eps_e,n = eps_e          (converged state for the next step)
+// The domain update is a parameter: the program passes the other ones (the
+// hook updateDomain: [Lagrangian] eqs 32-39, CPDI's corners; ample/domains/).
 // Inputs:  mesh · uvw (nDoF) converged displacement increment of the step ·
-//          method (GIMP domain update) · mpData
-// Outputs: mpData (mpC, u, vp, lp, cpdi->st, cpdi->xc, Fn, epsEn) updated
+//          mpData · [updateDomain]
+// Outputs: mpData (mpC, u, vp, lp, Fn, epsEn; with another updateDomain also
+//          cpdi->st, cpdi->xc) updated
 // moveMesh (finite element mode, Analysis::fem): coord += uvw, so the mesh
 //   follows the body and every point keeps its cell and local coordinates
 //   (x_p = sum_v S_vp x_v before and after): updated Lagrangian FEM with the
@@ -18,11 +21,17 @@
 //--------------------------------------------------------------------------
 #pragma once
 #include "mpData.h"
+#include <functional>
 
 namespace ample {
 
-void updateMPs(const Mesh& mesh, const Eigen::VectorXd& uvw, DomainUpdate method,
-               std::vector<MaterialPoint>& mpData);
+// eq 34 for a GIMP point (called before it moves); nothing for the others
+void updateGIMPDomain(const Mesh& mesh, const Eigen::VectorXd& uvw, MaterialPoint& mp);
+using UpdateDomain = std::function<void(const Mesh& mesh, const Eigen::VectorXd& uvw,
+                                        MaterialPoint& mp)>;  // updateGIMPDomain, or another
+
+void updateMPs(const Mesh& mesh, const Eigen::VectorXd& uvw, std::vector<MaterialPoint>& mpData,
+               const UpdateDomain& updateDomain = updateGIMPDomain);
 void moveMesh(Mesh& mesh, const Eigen::VectorXd& uvw);
 
 }  // namespace ample

@@ -153,6 +153,8 @@ static std::string summaryJson(const Setup& setup, const Params& P, const Analys
     << ",\n  \"total_NR_iterations\": " << log.totalNRit
     << ",\n  \"solver_analyses\": " << log.solverAnalyses << ",\n  \"lu_fallbacks\": " << log.luFallbacks
     << (an.split > 0 ? ",\n  \"splits\": " + std::to_string(log.splits) : std::string())
+    << (an.loneFrom > 0 ? ",\n  \"lone_from\": " + std::to_string(an.loneFrom) : std::string())
+    << (an.ghostFrom > 0 ? ",\n  \"ghost_from\": " + std::to_string(an.ghostFrom) : std::string())
     << ",\n  \"factorisations\": " << log.factorisations << ",\n  \"krylov_solves\": " << log.krylovSolves
     << ",\n  \"krylov_iterations\": " << log.krylovIterations
     << ",\n  \"converged\": " << (log.converged ? "true" : "false")

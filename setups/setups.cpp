@@ -10,6 +10,7 @@
 #include "ample/errors.h"
 #include "ample/solver/solverChoice.h"
 #include <cmath>
+#include <iterator>
 #include <sstream>
 
 namespace ample {
@@ -95,11 +96,11 @@ Params commonParams(int lstps) {
       Param("lstps", lstps).integer(1, 1e6).help("number of equal load steps"),
       Param("tol", 1e-9).above(0).below(1).help("Newton-Raphson tolerance on fErr (eq 35)"),
       Param("NRitMax", 10).integer(2, 1000).help("most Newton-Raphson passes per load step"),
-      Param("solver", 0).choice(0, solverNames())
+      Param("solver", 0).choice(0, {std::begin(solverNameList), std::end(solverNameList)})
           .help("sparse solver of Kt(fd,fd): LU = Eigen's SparseLU (COLAMD); LDLT = Eigen's "
                 "SimplicialLDLT (AMD) in every pass where Kt(fd,fd) is symmetric, else LU; LDLT_METIS "
                 "the same with METIS (-DAMPLE_METIS=ON); CHOLMOD = supernodal LL^T when symmetric, "
-                "UMFPACK = LU (-DAMPLE_SUITESPARSE=ON); this build: " + solversBuilt()),
+                "UMFPACK = LU (-DAMPLE_SUITESPARSE=ON); the ones this build has: below the list"),
       Param("substeps", 0).integer(0, 30)
           .help("remedy: halvings of a load step allowed when Newton fails (0 = the paper's algorithm)"),
       Param("ghost", 0).range(0, 1e3)
@@ -109,10 +110,11 @@ Params commonParams(int lstps) {
           .help("remedy: after each converged load step, split a GIMP point in two along x or y where "
                 "its domain half length lp exceeds split times the cell size h (0 = off, the paper's; "
                 "0.5 keeps every domain within one cell's length)"),
-      Param("lone", 1).integer(0, 1)
-          .help("leave out of the free set the dofs of nodes that one point alone reaches and "
-                "that are redundant (a zero-energy mode whose pivot is round-off; 0 = the paper's "
-                "free set, every node linked to a point)"),
+      Param("lone", 2).integer(0, 2)
+          .help("remedy: leave out of the free set the dofs of nodes that one point alone reaches and "
+                "that are redundant (a zero-energy mode whose pivot is round-off): 0 = never (the "
+                "paper's free set, every node linked to a point), 1 = in every load step, 2 = from the "
+                "first load step that fails without it, if it leaves a dof out there"),
       Param("mpType", 2).choice(1, {"MPM", "GIMP", "CPDI1", "CPDI2"}).help("material point type"),
       Param("mp", 2).integer(1, 20).help("material points per cell in each direction"),
       Param("cmType", 1).choice(1, {"elastic", "VM"}).help("constitutive model"),

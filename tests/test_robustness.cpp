@@ -46,6 +46,7 @@ TEST_SUITE("robustness") {
     RunLog log0;
     Analysis plain = s->setupGrid(P);
     CHECK_THROWS_AS(solveRun(plain, log0), NewtonFailure);  // the paper's algorithm
+    CHECK(plain.loneFrom == 0);                              // no lone node: the rule stays off
     setDefault(P, "substeps", 8);
     Analysis an = s->setupGrid(P);
     RunLog log;
@@ -123,6 +124,61 @@ TEST_SUITE("robustness") {
   }
 }
 
+TEST_SUITE("robustness") {
+  // a failed step's halves each prescribe half its increments (Increment::share): the
+  // increments at the prescribed dofs of the attempts that converge add up to the setup's
+  // for the step, exactly (shares 1/4 + 1/4 + 1/2: sums of powers of two); the squeeze's
+  // prescribed increment is its top's dv = -squash H / lstps
+  TEST_CASE("robustness: the halves and quarters of a failed load step prescribe its increments exactly (squeeze)") {
+    const Setup* s = findSetup("squeeze");
+    REQUIRE(s != nullptr);
+    Params P = s->params();
+    setDefault(P, "lstps", 4);
+    Analysis an = s->setupGrid(P);
+    an.substeps = 2;
+    const std::vector<BC> bc = an.mesh.bc;
+    REQUIRE(bc.size() > 0);
+    struct Done { double lf0, lf1, share; int depth; };
+    std::vector<Done> done;
+    Eigen::VectorXd applied = Eigen::VectorXd::Zero(an.mesh.nDoF());
+    bool refuse = true;                                      // the first half fails once
+    Hooks hooks;
+    hooks.checkConverged = [&refuse](const Analysis& a, const Increment& inc, int NRit, double fErr,
+                                     const Eigen::VectorXd& uvw, const Eigen::VectorXd& load) {
+      if (refuse && inc.depth == 1 && inc.lf0 == 0.0) {
+        refuse = false;
+        throw NewtonFailure("the first half refused by the test", Failure::NotConverged);
+      }
+      checkConverged(a, inc, NRit, fErr, uvw, load);
+    };
+    hooks.afterUpdate = [&](Analysis& a, const Increment& inc, int, double) {
+      done.push_back({inc.lf0, inc.lf1, inc.share, inc.depth});
+      applied += a.uvw;
+    };
+    hooks.failedStep = [](Analysis& a, const Increment& inc, const RunError& e, const Hooks& h) {
+      retryStep(a, inc, e, h, true);
+    };
+    retryStep(an, {1, 0.0, 0.25, 1.0, 0, ""}, NewtonFailure("the whole step refused by the test", Failure::NotConverged),
+              hooks, true);
+    REQUIRE(done.size() == 3);                               // two quarters, then the second half
+    const double lf[3][2] = {{0.0, 0.0625}, {0.0625, 0.125}, {0.125, 0.25}}, share[3] = {0.25, 0.25, 0.5};
+    for (int k = 0; k < 3; ++k) {
+      CAPTURE(k);
+      CHECK(done[k].lf0 == lf[k][0]);
+      CHECK(done[k].lf1 == lf[k][1]);
+      CHECK(done[k].share == share[k]);
+      CHECK(done[k].depth == (k < 2 ? 2 : 1));
+    }
+    double worst = 0, largest = 0;
+    for (const BC& c : bc) {
+      worst = std::max(worst, std::abs(applied(c.dof) - c.value));
+      largest = std::max(largest, std::abs(c.value));
+    }
+    CHECK(largest == doctest::Approx(0.05 / 4).epsilon(1e-12));  // squash H / lstps at the top
+    CHECK(worst <= 1e-15 * largest);
+  }
+}
+
 TEST_SUITE("stress") {
   TEST_CASE("stress: the 2x2 beam at h = 0.25 m completes with the ghost penalty / within 2 % of 6x6") {
     const std::vector<std::pair<std::string, double>> coarse = {{"a", 2}, {"mp", 2}};
@@ -137,9 +193,11 @@ TEST_SUITE("stress") {
       return 0;
     };
     CHECK(stopsIn({{"a", 2}, {"mp", 2}, {"lone", 0}}) == 8);  // the paper's free set: step 8
-    CHECK(stopsIn(coarse) == 12);                             // redundant lone dofs left out
+    CHECK(stopsIn({{"a", 2}, {"mp", 2}, {"lone", 1}}) == 12); // redundant lone dofs left out
+    CHECK(stopsIn(coarse) == 12);                             // lone=2: left out from step 8 on
     const Analysis g = runAll("beam", {{"a", 2}, {"mp", 2}, {"ghost", 0.01}});
-    CHECK(g.ghostFrom == 12);                                // switched on by the failing step
+    CHECK(g.loneFrom == 8);                                  // the lone-node rule, then
+    CHECK(g.ghostFrom == 12);                                // the penalty: each by a failing step
     const Analysis ref = runAll("beam", {{"a", 2}, {"mp", 6}});
     const Params P = findSetup("beam")->params();
     const Results rg = findSetup("beam")->results(g, P), rr = findSetup("beam")->results(ref, P);

@@ -111,7 +111,7 @@ TEST_SUITE("smallStrain") {
     detMPs(uvw, an.mpData, Formulation::SS);
     std::vector<Vector2d> X;
     for (const MaterialPoint& mp : an.mpData) X.push_back(mp.mpC);
-    updateMPs(an.mesh, uvw, DomainUpdate::Uii, an.mpData);     // the converged step
+    updateMPs(an.mesh, uvw, an.mpData);    // the converged step
     const Vector6d sigA = handStress(H, 1e6, 0.3);
     for (size_t p = 0; p < an.mpData.size(); ++p) {
       const MaterialPoint& mp = an.mpData[p];

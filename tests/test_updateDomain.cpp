@@ -6,7 +6,7 @@
 #include "ample/basis/domainCorners.h"
 #include "ample/elemMPinfo.h"
 #include "ample/meshes/formCoord2D.h"
-#include "ample/basis/updateDomain.h"
+#include "ample/domains/updateDomain.h"
 #include "ample/stiffness/tensorOps.h"
 #include "ample/updateMPs.h"
 #include <doctest/doctest.h>
@@ -225,6 +225,8 @@ TEST_SUITE("updateDomain") {
     mp.F = F3(modes()[0].F);
     updateDomain(mesh, Eigen::VectorXd::Zero(mesh.nDoF()), DomainUpdate::Uii, mp);
     CHECK(mp.lp.norm() == 0.0);
+    updateGIMPDomain(mesh, Eigen::VectorXd::Zero(mesh.nDoF()), mp);  // the core's eq 34 too
+    CHECK(mp.lp.norm() == 0.0);
   }
 
   TEST_CASE("updateDomain: CPDI1 s = F s0 / t = F t0 / area = det F area0 / lp = half bounding box") {
@@ -312,7 +314,9 @@ TEST_SUITE("updateDomain") {
     updateDomain(mesh, uvw, DomainUpdate::Corner, direct);
     CHECK((direct.lp - lExpected).norm() <= tolOK);
 
-    updateMPs(mesh, uvw, DomainUpdate::Corner, mpData);
+    updateMPs(mesh, uvw, mpData, [](const Mesh& g, const Eigen::VectorXd& u, MaterialPoint& p) {
+      updateDomain(g, u, DomainUpdate::Corner, p);              // the program's hook
+    });
     CHECK((mpData[0].lp - lExpected).norm() <= tolOK);
   }
 }

@@ -16,7 +16,7 @@ const Mesh cell = formCoord2D(1, 1, 1.0, 1.0);  // nodes 0-3, 8 dofs
 
 // the update of eq 34 (GIMP l_i = l0_i U_ii)
 void update(const Eigen::VectorXd& uvw, std::vector<MaterialPoint>& pts) {
-  updateMPs(cell, uvw, DomainUpdate::Uii, pts);
+  updateMPs(cell, uvw, pts);
 }
 
 Matrix3d rotationZ(double a) {
@@ -167,7 +167,7 @@ TEST_SUITE("updateMPs") {
       for (int v = 0; v < 4; ++v) da += a.Svp[v] * Vector2d(u(2 * a.nIN[v]), u(2 * a.nIN[v] + 1));
       for (int v = 0; v < 9; ++v) db += S[v] * Vector2d(u(2 * nodes[v]), u(2 * nodes[v] + 1));
       ua += da, ub += db;
-      updateMPs(grid, u, DomainUpdate::Uii, pts);
+      updateMPs(grid, u, pts);
       CHECK((pts[0].mpC - (a.mpC + ua)).norm() <= 1e-14);
       CHECK((pts[1].mpC - (b.mpC + ub)).norm() <= 1e-14);
       CHECK((pts[0].u - ua).norm() <= 1e-14);
@@ -186,7 +186,7 @@ TEST_SUITE("updateMPs") {
                                       gridPoint(MpType::MPM, {4, 5, 7, 8}, {0.1, 0.2, 0.3, 0.4}, G1)};
     pts[0].epsE << 1e-3, 0, 0, 0, 0, 0;
     pts[1].epsE << 0, 2e-3, 0, 0, 0, 0;
-    updateMPs(grid, Eigen::VectorXd::Zero(18), DomainUpdate::Uii, pts);
+    updateMPs(grid, Eigen::VectorXd::Zero(18), pts);
     CHECK(pts[0].vp == doctest::Approx(0.25 * (1.1 * 0.85 + 0.2 * 0.05)).epsilon(1e-14));   // det F1 = 0.945
     CHECK(pts[1].vp == doctest::Approx(0.25 * 0.9 * 1.05).epsilon(1e-14));                   // det G1 = 0.945
     CHECK(pts[0].Fn == F1);
@@ -197,7 +197,7 @@ TEST_SUITE("updateMPs") {
     pts[0].F = F2, pts[1].F = G2;
     pts[0].epsE << 0, 0, 0, 5e-4, 0, 0;
     pts[1].epsE << 0, 0, -7e-4, 0, 0, 0;
-    updateMPs(grid, Eigen::VectorXd::Zero(18), DomainUpdate::Uii, pts);
+    updateMPs(grid, Eigen::VectorXd::Zero(18), pts);
     CHECK(pts[0].vp == doctest::Approx(0.25 * (1.2 * 0.8 + 0.25 * 0.1)).epsilon(1e-14));    // det F2 = 0.985
     CHECK(pts[1].vp == doctest::Approx(0.25 * (0.95 * 1.1 + 0.1 * 0.15)).epsilon(1e-14));   // det G2 = 1.06
     CHECK(pts[0].Fn == F2);

@@ -41,7 +41,7 @@ MUTANTS=(
   "body-force-sign|ample/detExtForce.cpp|s/Vector2d\(0\.0, -g\)/Vector2d(0.0, g)/"
   "vmconst-rho-no-2|constitutive/VMconst.cpp|s/\+ 2\.0 \* s\.tail<3>\(\)/+ s.tail<3>()/"
   "cauchy-no-J|ample/detMPs.cpp|s/cm\.Ksig \/ mp\.F\.determinant\(\)/cm.Ksig/"
-  "uii-as-fii|ample/basis/updateDomain.cpp|s/Vector2d\(U\(0, 0\), U\(1, 1\)\)/Vector2d(F(0, 0), F(1, 1))/"
+  "uii-as-fii|ample/updateMPs.cpp|s/Vector2d\(U\(0, 0\), U\(1, 1\)\)/Vector2d(F(0, 0), F(1, 1))/"
   "eq35-denominator|ample/ample.cpp|s/\(\(fext \+ r\)\.array\(\)/((fext).array()/"
   "hooke-shear-G|constitutive/Hooke3d.cpp|s/E \/ \(2\.0 \* \(1\.0 \+ nu\)\)/E \/ (1.0 + nu)/"
   # implicit boundaries (tests/test_boundary.cpp)

@@ -5,6 +5,7 @@
 //--------------------------------------------------------------------------
 #include "ample/fast/detMPsFast.h"
 #include "ample/fast/elemMPinfoFast.h"
+#include "ample/solver/solverChoice.h"
 #include "cli.h"
 #include "ample/errors.h"
 #include <cctype>
@@ -241,6 +242,7 @@ std::string setupHelpText(const Setup& setup) {
   s << setup.name << ": " << setup.description << "\nparameters (name=value):\n";
   for (const Param& p : setup.params())
     s << "  " << p.name << " = " << p.value << "\t" << p.helpText << "; " << rangeText(p) << "\n";
+  s << "solver= choices this build has: " << solversBuilt() << "\n";
   return s.str();
 }
 

@@ -8,7 +8,8 @@
 //   stepTerms    the body force (detBodyForce), the ghost penalty of the step
 //                (remedies/ghostPenalty.h), the implicit boundaries' K and f
 //                (boundaries/ibStiffness.h)
-//   detFDoFs     the lone-node rule (remedies/loneNodes.h; lone=1, the default)
+//   detFDoFs     the lone-node rule (remedies/loneNodes.h): lone=1 every step, lone=2
+//                (the default) from the first step that fails without it
 //   solveFree    linSolve's Kt(fd,fd) \ rhs by the solver= choice with its analysis kept
 //                (solver/chosenSolve.h), also for SparseLU on large runs
 //   detMPs       detMPsFast for large runs (opt.pointLoop), timed
@@ -16,15 +17,18 @@
 //   afterPass    progress, residuals.csv; a NaN or Inf stops the step
 //   checkConverged  why a step failed (round-off floor, still falling:
 //                roundOffFloor.h), --accept-floor; an inverted point stops it
+//   updateDomain the other domain updates (domains/updateDomain.h): CPDI points,
+//                a domainUpdate= other than Uii
 //   afterUpdate  steps.csv, the finite element mode's moveMesh, the boundaries'
 //                motion, the split= remedy
-//   failedStep   the remedies ghost= and substeps= (remedies/loadSteps.h)
+//   failedStep   the remedies lone=2, ghost= and substeps= (remedies/loadSteps.h)
 //   endStep      the setup's afterStep, postPro, the step's time
 // See run.h for inputs and outputs.
 //--------------------------------------------------------------------------
 #include "run.h"
 #include "ample/boundaries/ibStiffness.h"
 #include "ample/detExtForce.h"
+#include "ample/domains/updateDomain.h"
 #include "ample/errors.h"
 #include "ample/fast/fastFrom.h"
 #include "ample/meshes/cellSearch.h"
@@ -140,8 +144,9 @@ static Hooks runHooks(Analysis& an, RunLog& log, const RunOptions& opt, RunState
       x.ib = ibStiffness(a.mesh, a.boundaries, a.mpData, inc.lstp, inc.share);
     x.NRit = 0, x.fErr = 1.0;
   };
-  if (an.lone)
-    h.detFDoFs = [&T, &x](const Mesh& mesh, const std::vector<MaterialPoint>& mpData) {
+  if (an.lone > 0)                                                   // remedy: 1 always, 2 from an.loneFrom
+    h.detFDoFs = [&T, &x, &an](const Mesh& mesh, const std::vector<MaterialPoint>& mpData) {
+      if (an.lone == 2 && an.loneFrom == 0) return timed(T.detFDoFs, detFDoFs, mesh, mpData);
       return timed(T.detFDoFs, detFDoFsLone, mesh, mpData, StiffnessSources{&x.Kgp, &x.ib.K});
     };
   else
@@ -176,6 +181,11 @@ static Hooks runHooks(Analysis& an, RunLog& log, const RunOptions& opt, RunState
     recordStep(log, inc, NRit, fErr, x.Kff, true);                   // converged: its steps.csv row
     x.gap.lap();                                                     // updateMPs from here
   };
+  const bool cpdi = std::any_of(an.mpData.begin(), an.mpData.end(), [](const MaterialPoint& mp) { return isCPDI(mp); });
+  if (cpdi || an.domainUpdate != DomainUpdate::Uii)                  // [Lagrangian]'s, CPDI's domains
+    h.updateDomain = [method = an.domainUpdate](const Mesh& mesh, const Eigen::VectorXd& uvw, MaterialPoint& mp) {
+      updateDomain(mesh, uvw, method, mp);
+    };
   h.afterUpdate = [&log, &x, &opt, &T](Analysis& a, const Increment& inc, int /*NRit*/, double /*fErr*/) {
     T.updateMPs += x.gap.lap();
     if (a.fem) moveMesh(a.mesh, a.uvw);                              // FEM: the mesh follows (MPM: reset)

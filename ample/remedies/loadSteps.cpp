@@ -4,11 +4,22 @@
 // [AMPLE] sec 3.2. See loadSteps.h for inputs and outputs.
 //--------------------------------------------------------------------------
 #include "loadSteps.h"
+#include "ample/detFDoFs.h"
 #include "constitutive/Hooke3d.h"
 #include <algorithm>
 #include <cstdio>
 
 namespace ample {
+
+// switch the lone-node rule on from inc's load step (an.loneFrom) if it leaves a dof of
+// this step's free set out (the basis of the step start is still in mpData), else leave it off
+static bool loneRuleChanges(Analysis& an, const Increment& inc, const Hooks& hooks) {
+  const std::vector<int> without = detFDoFs(an.mesh, an.mpData);
+  an.loneFrom = inc.lstp;                                         // the hook's free set is now the rule's
+  if (hooks.detFDoFs(an.mesh, an.mpData) != without) return true;
+  an.loneFrom = 0;
+  return false;
+}
 
 // one attempt at inc; a failure goes to the hook again (which may retry it in turn)
 static void attempt(Analysis& an, const Increment& inc, const Hooks& hooks) {
@@ -21,20 +32,26 @@ static void attempt(Analysis& an, const Increment& inc, const Hooks& hooks) {
 }
 
 void retryStep(Analysis& an, const Increment& inc, const RunError& e, const Hooks& hooks, bool quiet) {
-  std::string failure = e.what();
-  if (!inc.withoutGhost.empty())                                  // it failed with the penalty too
-    failure += " (with the ghost penalty " + std::to_string(an.ghost) + "; without it: " +
-               inc.withoutGhost + ")";
-  if (an.ghost > 0 && an.ghostFrom == 0) {                        // remedy 1: the ghost penalty
+  const std::string failure = e.what() + (inc.earlier.empty() ? "" : " (" + inc.earlier.substr(2) + ")");
+  if (an.lone == 2 && an.loneFrom == 0 && loneRuleChanges(an, inc, hooks)) {  // remedy 1: lone nodes
+    restoreConverged(an.mpData);                                  // (an.loneFrom: on to the end)
+    if (!quiet) std::printf("  %s: retrying with the lone-node rule\n", e.what());
+    Increment again = inc;
+    again.earlier += "; with the lone-node rule; without it: " + std::string(e.what());
+    return attempt(an, again, hooks);
+  }
+  if (an.ghost > 0 && an.ghostFrom == 0) {                        // remedy 2: the ghost penalty
     an.ghostFrom = inc.lstp;                                      // on from here to the end
     restoreConverged(an.mpData);
     if (!quiet) std::printf("  %s: retrying with the ghost penalty\n", e.what());
     Increment again = inc;
-    again.withoutGhost = e.what();
+    char gamma[32];
+    std::snprintf(gamma, sizeof gamma, "%g", an.ghost);
+    again.earlier += "; with the ghost penalty " + std::string(gamma) + "; without it: " + e.what();
     return attempt(an, again, hooks);
   }
   if (inc.depth >= an.substeps) throw NewtonFailure(failure, e.kind);  // the paper's way: the run stops
-  restoreConverged(an.mpData);                                    // remedy 2: halves
+  restoreConverged(an.mpData);                                    // remedy 3: halves
   if (!quiet) std::printf("  %s: retrying with half the increment\n", failure.c_str());
   const double mid = 0.5 * (inc.lf0 + inc.lf1);
   attempt(an, {inc.lstp, inc.lf0, mid, inc.share / 2, inc.depth + 1, ""}, hooks);  // first half
@@ -76,6 +93,8 @@ std::string whatToTry(const RunError& e, const Analysis& an, int lstpsMax) {
           : "substeps=" + std::to_string(an.substeps ? std::min(30, 2 * an.substeps) : 4) +
             " (a failed load step is retried in halves)";
       if (!splitAdvice(an).empty()) return splitAdvice(an) + "; or " + halves;
+      if (an.lone == 0)
+        return "; try lone=2 (the redundant dofs of nodes that one point alone reaches are left out) or " + halves;
       if (an.mesh.regular() && an.ghost == 0)
         return "; try ghost=0.01 (the ghost penalty pins the nearly free nodes of barely filled cells) or " +
                halves + "; with neither, check the boundary conditions";

@@ -2,17 +2,20 @@
 // loadSteps — the remedies that retry a failed load step, and what to try
 //--------------------------------------------------------------------------
 // [AMPLE] sec 3.2: the load is applied in lstps equal steps (solve). With
-// ghost = 0 and substeps = 0 (the paper's algorithm, the default) retryStep
-// throws the failure (as NewtonFailure), which stops the run. Otherwise it restores the converged
+// ghost = 0, substeps = 0 (the paper's algorithm, the default) and no lone-node
+// rule to switch on, retryStep throws the failure (as NewtonFailure), which stops the run. Otherwise it restores the converged
 // state (restoreConverged) and solves the step again (loadStep):
-//   ghost > 0 (first): the same increment with the ghost penalty, which stays
+//   lone = 2 (first):  the same increment with the lone-node rule (hooks.detFDoFs
+//                      reads an.loneFrom), on from this load step to the end,
+//                      if it leaves a dof of the step's free set out;
+//   ghost > 0 (then):  the same increment with the ghost penalty, which stays
 //                      on from this load step to the end (an.ghostFrom);
 //   substeps > 0 (then): its two halves, each of which may be halved again,
 //                      up to substeps times.
 // A retry that fails goes to hooks.failedStep again (the program's: it logs
 // the attempt and calls retryStep).
-// Inputs:  the failed increment and its error · an (ghost, ghostFrom, substeps,
-//          mpData) · hooks
+// Inputs:  the failed increment and its error · an (lone, loneFrom, ghost, ghostFrom,
+//          substeps, mesh, mpData) · hooks
 // Outputs: an (the step solved) · or the failure thrown as NewtonFailure
 // Tests:   tests/test_robustness.cpp (large load steps)
 //--------------------------------------------------------------------------

@@ -1,5 +1,5 @@
 //--------------------------------------------------------------------------
-// loneNodes — detFDoFs less the redundant dofs of lone nodes (lone=1, the default)
+// loneNodes — detFDoFs less the redundant dofs of lone nodes (lone=1; lone=2 after a failure)
 //--------------------------------------------------------------------------
 // detFDoFs' free set, from which two rules remove redundant dofs:
 // A node reached through one CPDI corner only:

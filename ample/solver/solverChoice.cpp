@@ -5,12 +5,12 @@
 //--------------------------------------------------------------------------
 #include "solverChoice.h"
 #include "ample/errors.h"
+#include <iterator>
 
 namespace ample {
 
 const std::vector<std::string>& solverNames() {
-  static const std::vector<std::string> names{"LU", "LDLT", "LDLT_METIS", "CHOLMOD", "UMFPACK", "KRYLOV",
-                                                "LDLT_HALVES"};
+  static const std::vector<std::string> names(std::begin(solverNameList), std::end(solverNameList));
   return names;
 }
 

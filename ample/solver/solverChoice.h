@@ -17,7 +17,10 @@
 
 namespace ample {
 
-const std::vector<std::string>& solverNames();  // "LU", "LDLT", "LDLT_METIS", "CHOLMOD", "UMFPACK", "KRYLOV", "LDLT_HALVES"
+// the names of solver=, in the order of LinearSolver (a constant: reading it runs no code)
+constexpr const char* solverNameList[] = {"LU", "LDLT", "LDLT_METIS", "CHOLMOD", "UMFPACK", "KRYLOV", "LDLT_HALVES"};
+
+const std::vector<std::string>& solverNames();  // solverNameList as strings
 bool solverBuilt(LinearSolver choice);          // LU, LDLT: always; the others with their option
 std::string solversBuilt();                     // e.g. "LU, LDLT"
 void checkSolverBuilt(LinearSolver choice);     // InputError when not built

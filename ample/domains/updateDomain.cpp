@@ -4,9 +4,10 @@
 // [Lagrangian] eqs 32-39, [CPDI] sec 2 (vii). See updateDomain.h.
 //--------------------------------------------------------------------------
 #include "updateDomain.h"
-#include "MPMbasis.h"
-#include "domainCorners.h"
+#include "ample/basis/MPMbasis.h"
+#include "ample/basis/domainCorners.h"
 #include "ample/stiffness/tensorOps.h"
+#include "ample/updateMPs.h"
 #include <cmath>
 
 namespace ample {
@@ -49,11 +50,7 @@ void updateDomain(const Mesh& mesh, const Eigen::VectorXd& uvw, DomainUpdate met
     case DomainUpdate::None: mp.lp = mp.lp0; break;
     case DomainUpdate::DetF: mp.lp = mp.lp0 * std::sqrt(J); break;
     case DomainUpdate::Fii: mp.lp = mp.lp0.cwiseProduct(Vector2d(std::abs(F(0, 0)), std::abs(F(1, 1)))); break;
-    case DomainUpdate::Uii: {
-      const Matrix3d U = stretchTensor(F);
-      mp.lp = mp.lp0.cwiseProduct(Vector2d(U(0, 0), U(1, 1)));
-      break;
-    }
+    case DomainUpdate::Uii: updateGIMPDomain(mesh, uvw, mp); break;  // the core's, [AMPLE] eq 34
     case DomainUpdate::Corner: {
       const Corners x = moveCorners(mesh, uvw, mp, domainCorners(mp));
       Corners m;  // edge midpoints: bottom, right, top, left

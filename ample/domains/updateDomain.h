@@ -1,11 +1,14 @@
 //--------------------------------------------------------------------------
-// updateDomain — material point domain at the end of a load step
+// updateDomain — the other domain updates: [Lagrangian]'s and CPDI's
 //--------------------------------------------------------------------------
+// The hook updateDomain of updateMPs, which the program passes in place of the
+// core's updateGIMPDomain ([AMPLE] eq 34) when a setup has CPDI points or asks
+// for another domainUpdate.
 // GIMP half lengths l_p by the chosen method ([Lagrangian] sec 6.4, table 2):
 //   None       l = l0
 //   DetF       l_i = l0_i det(F)^(1/nD)                               (eq 32)
 //   Fii        l_i = l0_i |F_ii|                                      (eq 33)
-//   Uii        l_i = l0_i U_ii, U = sqrt(F'F)                 (eq 34; default)
+//   Uii        l_i = l0_i U_ii, U = sqrt(F'F)   (eq 34; default: updateGIMPDomain)
 //   Corner     corners moved by the grid (eq 35), half lengths from the edge
 //              midpoints (eq 36), scaled to the volume det(F) V0 (eq 37)
 //   FiiVol     l_i = l0_i |F_ii| (det F / prod_j |F_jj|)^(1/nD)          (eq 38)
