@@ -6,18 +6,26 @@
 # Builds the program only (build/release/ample, the build preset "release", -j2): about 1-2 min
 # on 2 idle cores, make's [ NN%] lines show the progress; the tests are built by
 # `cmake --workflow --preset quick` (README, "Test").
+# ./quickstart.sh --fast [args]: also MUMPS and a fast serial BLAS (libmumps-seq-dev,
+# libopenblas0-serial), built with the preset "fast" (build/fast/ample, solver=MUMPS).
 set -euo pipefail
 cd "$(dirname "$0")"
 pkgs="cmake g++ libeigen3-dev doctest-dev python3-matplotlib"
+preset=release
+if [ "${1:-}" = "--fast" ]; then
+  shift
+  pkgs="$pkgs libmumps-seq-dev libopenblas0-serial"
+  preset=fast
+fi
 if ! dpkg -s $pkgs >/dev/null 2>&1; then
   sudo=""; [ "$(id -u)" -ne 0 ] && sudo="sudo"
   echo "quickstart: installing $pkgs"
   $sudo apt-get update && $sudo env DEBIAN_FRONTEND=noninteractive apt-get install -y $pkgs
 fi
-echo "quickstart: configuring build/release (Release)"
-cmake --preset release > /dev/null
-echo "quickstart: building build/release/ample (-j2; one line per source file)"
+echo "quickstart: configuring build/$preset (Release)"
+cmake --preset $preset > /dev/null
+echo "quickstart: building build/$preset/ample (-j2; one line per source file)"
 start=$(date +%s)
-cmake --build --preset release
-echo "quickstart: built in $(( $(date +%s) - start )) s; running: build/release/ample compaction $*"
-build/release/ample compaction "$@"
+cmake --build --preset $preset --target ample
+echo "quickstart: built in $(( $(date +%s) - start )) s; running: build/$preset/ample compaction $*"
+build/$preset/ample compaction "$@"

@@ -4,12 +4,15 @@
 #                           solver=LDLT_METIS (Eigen's MetisOrdering)
 #   -DAMPLE_SUITESPARSE=ON  SuiteSparse (apt-get install libsuitesparse-dev):
 #                           solver=CHOLMOD (supernodal LL^T) and solver=UMFPACK
+#   -DAMPLE_MUMPS=ON        MUMPS, its sequential library (apt-get install libmumps-seq-dev;
+#                           libopenblas0-serial makes its dense fronts fast): solver=MUMPS
 #
-# Both OFF by default: the default build uses Eigen only. Each ON option defines
+# All OFF by default: the default build uses Eigen only. Each ON option defines
 # AMPLE_HAVE_METIS / AMPLE_HAVE_SUITESPARSE on amplecore (and so on every program
 # linked to it); a library that is asked for and not found stops the configure.
 option(AMPLE_METIS "METIS ordering for the sparse solve (solver=LDLT_METIS)" OFF)
 option(AMPLE_SUITESPARSE "SuiteSparse solvers for the sparse solve (solver=CHOLMOD, UMFPACK)" OFF)
+option(AMPLE_MUMPS "MUMPS (sequential) for the sparse solve (solver=MUMPS)" OFF)
 
 # amplecore (and every program linked to it) gets the headers, the libraries and the define
 function(ample_use_library define include_dir libraries)
@@ -42,4 +45,20 @@ if(AMPLE_SUITESPARSE)
     message(FATAL_ERROR "AMPLE_SUITESPARSE=ON: cholmod.h not found (Debian: apt-get install libsuitesparse-dev)")
   endif()
   ample_use_library(AMPLE_HAVE_SUITESPARSE "${SUITESPARSE_INCLUDE_DIR}" "${SUITESPARSE_LIBRARIES}")
+endif()
+
+if(AMPLE_MUMPS)
+  find_path(MUMPS_INCLUDE_DIR dmumps_c.h)
+  set(MUMPS_LIBRARIES "")
+  foreach(lib dmumps_seq mumps_common_seq mpiseq_seq pord_seq)
+    find_library(MUMPS_${lib}_LIBRARY ${lib})
+    if(NOT MUMPS_${lib}_LIBRARY)
+      message(FATAL_ERROR "AMPLE_MUMPS=ON: lib${lib} not found (Debian: apt-get install libmumps-seq-dev)")
+    endif()
+    list(APPEND MUMPS_LIBRARIES ${MUMPS_${lib}_LIBRARY})
+  endforeach()
+  if(NOT MUMPS_INCLUDE_DIR)
+    message(FATAL_ERROR "AMPLE_MUMPS=ON: dmumps_c.h not found (Debian: apt-get install libmumps-seq-dev)")
+  endif()
+  ample_use_library(AMPLE_HAVE_MUMPS "${MUMPS_INCLUDE_DIR}" "${MUMPS_LIBRARIES}")
 endif()

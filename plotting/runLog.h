@@ -22,6 +22,7 @@ struct StepRow {
   double fErr;       // final normalised residual (eq 35)
   bool converged;
   double seconds;    // wall time of the step
+  int negativePivots = -1;  // solver=MUMPS: of the step's last LDL^T (-1: none)
 };
 
 struct ResidualRow {

@@ -6,6 +6,7 @@
 #include "writeOutput.h"
 #include "ample/errors.h"
 #include "makeVtk.h"
+#include <algorithm>
 #include <cerrno>
 #include <cmath>
 #include <cstdio>
@@ -79,10 +80,15 @@ static std::string jsonString(const std::string& text) {
 static std::string stepsCsv(const RunLog& log) {
   std::ostringstream s;
   s.precision(17);
-  s << "lstp,load_factor,NRit,fErr,converged,seconds\n";
-  for (const StepRow& r : log.steps)
+  const bool pivots = std::any_of(log.steps.begin(), log.steps.end(),   // solver=MUMPS's LDL^T
+                                  [](const StepRow& r) { return r.negativePivots >= 0; });
+  s << "lstp,load_factor,NRit,fErr,converged," << (pivots ? "negative_pivots," : "") << "seconds\n";
+  for (const StepRow& r : log.steps) {
     s << r.lstp << "," << r.loadFactor << "," << r.NRit << "," << residualText(r.fErr) << ","
-      << (r.converged ? 1 : 0) << "," << r.seconds << "\n";
+      << (r.converged ? 1 : 0) << ",";
+    if (pivots) s << (r.negativePivots >= 0 ? std::to_string(r.negativePivots) : "") << ",";
+    s << r.seconds << "\n";
+  }
   return s.str();
 }
 
@@ -142,6 +148,20 @@ static std::string resultsJson(const Results& res) {
   return s.str();
 }
 
+// solver=MUMPS: the negative pivots of the last converged step's last LDL^T, and the first
+// converged load step whose tangent had any (0: none); "" when no step had an LDL^T
+static std::string negativePivotsJson(const RunLog& log) {
+  int last = -1, from = 0;
+  for (const StepRow& r : log.steps)
+    if (r.converged && r.negativePivots >= 0) {
+      last = r.negativePivots;
+      if (from == 0 && r.negativePivots > 0) from = r.lstp;
+    }
+  if (last < 0) return "";
+  return ",\n  \"negative_pivots\": " + std::to_string(last) + ",\n  \"negative_pivots_from\": " +
+         std::to_string(from);
+}
+
 static std::string summaryJson(const Setup& setup, const Params& P, const Analysis& an,
                                const RunLog& log, const Results& res) {
   std::ostringstream s;
@@ -155,6 +175,7 @@ static std::string summaryJson(const Setup& setup, const Params& P, const Analys
     << (an.split > 0 ? ",\n  \"splits\": " + std::to_string(log.splits) : std::string())
     << (an.loneFrom > 0 ? ",\n  \"lone_from\": " + std::to_string(an.loneFrom) : std::string())
     << (an.ghostFrom > 0 ? ",\n  \"ghost_from\": " + std::to_string(an.ghostFrom) : std::string())
+    << negativePivotsJson(log)
     << ",\n  \"factorisations\": " << log.factorisations << ",\n  \"krylov_solves\": " << log.krylovSolves
     << ",\n  \"krylov_iterations\": " << log.krylovIterations
     << ",\n  \"converged\": " << (log.converged ? "true" : "false")

@@ -16,6 +16,9 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
+#include <string>
+#include <vector>
 #include <sys/wait.h>
 
 using namespace ample;
@@ -332,7 +335,8 @@ TEST_SUITE("linSolve") {
     }
   }
   // the chain's analytic solution with every choice; the unsymmetric chain goes to SparseLU
-  // for the symmetric ones (a fallback, counted); the unconstrained chain is refused by all
+  // for the symmetric ones (a fallback, counted; MUMPS to its own LU); the unconstrained chain
+  // is refused by all
   TEST_CASE("linSolve: each solver= of this build: the chain's analytic solution, the unsymmetric fallback, the singular chain") {
     Eigen::VectorXd oobf(5);
     oobf << 0.7, 0.5, -1.0, 0.25, 2.0;
@@ -349,7 +353,9 @@ TEST_SUITE("linSolve") {
       const LinSolveOut c = chosenSolve(S, {{0, 0.1}}, K, oobf, 1, {1, 2, 3, 4});
       const Eigen::VectorXd r = K * c.duvw - oobf;
       for (int d = 1; d < 5; ++d) CHECK(std::abs(r(d)) <= 1e-13);
-      CHECK(S.fallbacks == (choice == LinearSolver::UMFPACK || choice == LinearSolver::KRYLOV ? 0 : 1));
+      const bool ownLU = choice == LinearSolver::UMFPACK || choice == LinearSolver::KRYLOV ||
+                         choice == LinearSolver::MUMPS;  // an unsymmetric pass is theirs, not a fallback
+      CHECK(S.fallbacks == (ownLU ? 0 : 1));
       CHECK(S.builds == 1);
       FreeSystem T;
       T.choice = choice;
@@ -364,7 +370,9 @@ TEST_SUITE("linSolve") {
     REQUIRE(s != nullptr);
     for (LinearSolver choice : solvers(false)) {
       const std::string name = solverNames()[size_t(choice)];
-      const std::string option = choice == LinearSolver::LDLT_METIS ? "-DAMPLE_METIS=ON" : "-DAMPLE_SUITESPARSE=ON";
+      const std::string option = choice == LinearSolver::LDLT_METIS ? "-DAMPLE_METIS=ON"
+                                 : choice == LinearSolver::MUMPS    ? "-DAMPLE_MUMPS=ON"
+                                                                    : "-DAMPLE_SUITESPARSE=ON";
       CAPTURE(name);
       Params P = s->params();
       setDefault(P, "solver", int(choice));
@@ -485,5 +493,67 @@ TEST_SUITE("linSolve") {
       CHECK(a.duvw(held) == (NRit == 1 ? 0.01 : 0.0));
     }
     CHECK(S.builds == 1);                                 // analysed once for the three passes
+  }
+}
+
+// solver=MUMPS (built with -DAMPLE_MUMPS=ON): the negative pivots of its LDL^T are the
+// negative eigenvalues of K (Sylvester's law of inertia), against the analytic spectrum of
+// tridiag(-1, d, -1) of order n, d - 2 cos(k pi / (n + 1)), k = 1..n; the solve against a
+// dense LU; and a run's steps.csv and summary.json carry them
+TEST_SUITE("linSolve") {
+  TEST_CASE("linSolve: MUMPS's negative pivots count the negative eigenvalues of an indefinite Kt(fd,fd) (tridiagonal: analytic)" *
+            doctest::skip(!solverBuilt(LinearSolver::MUMPS))) {
+    const int n = 40;
+    for (double d : {3.0, 1.0, 0.5, -0.7, -3.0}) {
+      CAPTURE(d);
+      std::vector<Eigen::Triplet<double>> t;
+      for (int i = 0; i < n; ++i) {
+        t.emplace_back(i, i, d);
+        if (i > 0) t.emplace_back(i, i - 1, -1.0), t.emplace_back(i - 1, i, -1.0);
+      }
+      SpMat K(n, n);
+      K.setFromTriplets(t.begin(), t.end());
+      int negative = 0;                                   // the analytic count
+      for (int k = 1; k <= n; ++k) negative += d - 2.0 * std::cos(k * M_PI / (n + 1)) < 0;
+      FreeSystem S;
+      S.choice = LinearSolver::MUMPS;
+      std::vector<int> fd(n);
+      for (int i = 0; i < n; ++i) fd[i] = i;
+      const Eigen::VectorXd b = Eigen::VectorXd::LinSpaced(n, 1.0, 2.0);
+      const Eigen::VectorXd x = chosenSolveFree(S, K, fd, b, 1);
+      CHECK(S.negativePivots == negative);
+      const Eigen::VectorXd ref = Eigen::MatrixXd(K).partialPivLu().solve(b);
+      CHECK((x - ref).norm() <= 1e-12 * ref.norm());
+    }
+  }
+
+  TEST_CASE("linSolve: solver=MUMPS writes each step's negative pivots (steps.csv) and the last and first (summary.json); an elastic tangent has none" *
+            doctest::skip(!solverBuilt(LinearSolver::MUMPS))) {
+    const std::string out = std::string(AMPLE_TEST_TMP) + "/mumps_pivots";
+    std::filesystem::create_directories(AMPLE_TEST_TMP);
+    const std::string cmd = std::string(AMPLE_BINARY) + " collapse a=1 solver=MUMPS --vtk 0 --quiet --out " + out +
+                            " >/dev/null 2>&1";
+    REQUIRE(std::system(cmd.c_str()) == 0);
+    std::ifstream steps(out + "/steps.csv");
+    std::string line;
+    std::getline(steps, line);
+    CHECK(line == "lstp,load_factor,NRit,fErr,converged,negative_pivots,seconds");
+    int rows = 0, last = -1, from = 0;
+    while (std::getline(steps, line)) {
+      std::vector<std::string> f;
+      size_t at = 0;
+      for (size_t c; (c = line.find(',', at)) != std::string::npos; at = c + 1) f.push_back(line.substr(at, c - at));
+      REQUIRE(f.size() == 6);
+      const int pivots = std::atoi(f[5].c_str());
+      if (rows == 0) CHECK(pivots == 0);                 // step 1 is elastic: Kt(fd,fd) positive definite
+      last = pivots;
+      if (from == 0 && pivots > 0) from = std::atoi(f[0].c_str());
+      rows++;
+    }
+    CHECK(rows == 40);
+    std::ifstream json(out + "/summary.json");
+    const std::string text((std::istreambuf_iterator<char>(json)), std::istreambuf_iterator<char>());
+    CHECK(text.find("\"negative_pivots\": " + std::to_string(last) + ",") != std::string::npos);
+    CHECK(text.find("\"negative_pivots_from\": " + std::to_string(from)) != std::string::npos);
   }
 }

@@ -405,7 +405,7 @@ static void recordStep(RunLog& log, const Increment& inc, int NRit, double fErr,
   log.solverAnalyses = Kff.builds;                                   // so far (summary.json)
   log.luFallbacks = Kff.fallbacks;
   log.factorisations = Kff.factorisations, log.krylovSolves = Kff.krylovSolves, log.krylovIterations = Kff.krylovIterations;
-  log.steps.push_back({inc.lstp, inc.lf1, NRit, fErr, converged, 0.0});
+  log.steps.push_back({inc.lstp, inc.lf1, NRit, fErr, converged, 0.0, Kff.negativePivots});
 }
 
 }  // namespace ample

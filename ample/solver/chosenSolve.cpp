@@ -126,12 +126,36 @@ static Eigen::VectorXd krylovSolve(FreeSystem& S, const Eigen::VectorXd& rhs, in
   return x;
 }
 
+#ifdef AMPLE_HAVE_MUMPS
+// solver=MUMPS: its LDL^T where S.Kff is symmetric and the solve is accepted (as symmetricSolve),
+// else its LU; RunError when that fails too
+static Eigen::VectorXd mumpsSolve(FreeSystem& S, const Eigen::VectorXd& rhs, const std::string& singular) {
+  S.negativePivots = -1;
+  if (symmetric(S.Kff)) {
+    S.factorisations++;
+    if (S.mumps.factorize(S.Kff, true)) {
+      const Eigen::VectorXd x = S.mumps.solve(rhs);
+      S.negativePivots = S.mumps.negativePivots();
+      if (x.allFinite() && backwardError(S.Kff, x, rhs) <= 1e-12) return x;
+    }
+    if (S.fallbacks++ == 0)                             // said at the run's end, as below
+      S.notes += "ample: solver=MUMPS: its LDL^T of Kt(fd,fd) failed or was inexact: its LU solves such passes\n";
+  }
+  S.factorisations++;
+  if (!S.mumps.factorize(S.Kff, false)) throw RunError(S.mumps.message() + singular, Failure::Singular);
+  return S.mumps.solve(rhs);
+}
+#endif
+
 // numeric factorisation of S.Kff and the solve: SparseLU (solver=LU), UMFPACK, or a symmetric
 // solver when Kff is symmetric and its solve succeeds (else SparseLU); RunError when LU fails
 static Eigen::VectorXd factorisedSolve(FreeSystem& S, const Eigen::VectorXd& rhs, int NRit) {
   if (S.choice == LinearSolver::KRYLOV) return krylovSolve(S, rhs, NRit);
   const std::string singular = "): the problem is singular, e.g. a rigid-body mode without enough "
                                "boundary conditions or a nearly empty cell";
+#ifdef AMPLE_HAVE_MUMPS
+  if (S.choice == LinearSolver::MUMPS) return mumpsSolve(S, rhs, singular.substr(1));
+#endif
 #ifdef AMPLE_HAVE_SUITESPARSE
   if (S.choice == LinearSolver::UMFPACK) {
     S.umfpack.factorize(S.Kff);                         // numeric factorisation only

@@ -61,6 +61,9 @@ void buildFreeSystem(const SpMat& Kt, const std::vector<int>& fd, FreeSystem& S)
       break;
     case LinearSolver::UMFPACK: S.umfpack.analyzePattern(S.Kff); break;
 #endif
+#ifdef AMPLE_HAVE_MUMPS
+    case LinearSolver::MUMPS: S.mumps.newPattern(); break;  // analysed at its first factorisation
+#endif
     default: break;                                     // not built: refused above
   }
   S.fd = fd;

@@ -33,6 +33,9 @@
 //   LDLT_HALVES LDL^T of two halves of the free dofs and the interface between
 //               them (halvesLDLT.h): the halves factorised on two threads at
 //               once; symmetric passes only, as LDLT
+//   MUMPS       MUMPS's LDL^T (general symmetric: indefinite too) where Kt(fd,fd)
+//               is symmetric and its solve is accepted, else MUMPS's LU
+//               (mumps.h; AMPLE_MUMPS); the negative pivots of the LDL^T kept
 // A symmetric choice whose pass is not symmetric (or whose factorisation
 // fails, e.g. LL^T of an indefinite Kt, or whose solve has a backward error
 // above 1e-12: linSolve.cpp) falls back to SparseLU for that pass,
@@ -61,6 +64,9 @@
 #include <Eigen/CholmodSupport>
 #include <Eigen/UmfPackSupport>
 #endif
+#ifdef AMPLE_HAVE_MUMPS
+#include "mumps.h"
+#endif
 
 namespace ample {
 
@@ -83,6 +89,10 @@ struct FreeSystem {
   Eigen::CholmodSupernodalLLT<SpMat> cholmod;  // CHOLMOD
   Eigen::UmfPackLU<SpMat> umfpack;             // UMFPACK
 #endif
+#ifdef AMPLE_HAVE_MUMPS
+  MumpsSolver mumps;                           // MUMPS
+#endif
+  int negativePivots = -1;                     // MUMPS: of the last LDL^T (-1: none, or an LU)
   int builds = 0, fallbacks = 0;               // analyses run; symmetric passes solved by LU
   std::string notes;                           // lines for stderr (the first LU fallback), taken
                                                // by the run's log (program/run.cpp recordStep)

@@ -18,6 +18,7 @@ const std::vector<std::string>& solverNames() {
 static std::string optionFor(LinearSolver choice) {
   if (choice == LinearSolver::LDLT_METIS) return "AMPLE_METIS";
   if (choice == LinearSolver::CHOLMOD || choice == LinearSolver::UMFPACK) return "AMPLE_SUITESPARSE";
+  if (choice == LinearSolver::MUMPS) return "AMPLE_MUMPS";
   return "";
 }
 
@@ -28,6 +29,9 @@ bool solverBuilt(LinearSolver choice) {
 #endif
 #ifdef AMPLE_HAVE_SUITESPARSE
   if (option == "AMPLE_SUITESPARSE") return true;
+#endif
+#ifdef AMPLE_HAVE_MUMPS
+  if (option == "AMPLE_MUMPS") return true;
 #endif
   return option.empty();
 }
@@ -44,7 +48,8 @@ void checkSolverBuilt(LinearSolver choice) {
   if (k >= solverNames().size())
     throw InputError("solver=" + std::to_string(k) + ": no such sparse solver; this build has " + solversBuilt());
   if (solverBuilt(choice)) return;
-  const std::string library = optionFor(choice) == "AMPLE_METIS" ? "libmetis-dev" : "libsuitesparse-dev";
+  const std::string library = optionFor(choice) == "AMPLE_METIS" ? "libmetis-dev"
+                              : optionFor(choice) == "AMPLE_MUMPS" ? "libmumps-seq-dev" : "libsuitesparse-dev";
   throw InputError("solver=" + solverNames()[k] + " is not in this build: it has solver=" + solversBuilt() +
                    "; to add " + solverNames()[k] + ", configure with -D" + optionFor(choice) +
                    "=ON (needs " + library + ") and rebuild");
