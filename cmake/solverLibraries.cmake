@@ -6,6 +6,9 @@
 #                           solver=CHOLMOD (supernodal LL^T) and solver=UMFPACK
 #   -DAMPLE_MUMPS=ON        MUMPS, its sequential library (apt-get install libmumps-seq-dev;
 #                           libopenblas0-serial makes its dense fronts fast): solver=MUMPS
+#   -DAMPLE_PETSC=ON        PETSc with Open MPI (apt-get install petsc-dev): solver=PETSC,
+#                           MUMPS over the ranks of `mpirun -n N ample ...`; not with
+#                           AMPLE_MUMPS (its sequential library's MPI stand-ins clash)
 #
 # All OFF by default: the default build uses Eigen only. Each ON option defines
 # AMPLE_HAVE_METIS / AMPLE_HAVE_SUITESPARSE on amplecore (and so on every program
@@ -13,6 +16,7 @@
 option(AMPLE_METIS "METIS ordering for the sparse solve (solver=LDLT_METIS)" OFF)
 option(AMPLE_SUITESPARSE "SuiteSparse solvers for the sparse solve (solver=CHOLMOD, UMFPACK)" OFF)
 option(AMPLE_MUMPS "MUMPS (sequential) for the sparse solve (solver=MUMPS)" OFF)
+option(AMPLE_PETSC "PETSc over MPI ranks for the sparse solve (solver=PETSC)" OFF)
 
 # amplecore (and every program linked to it) gets the headers, the libraries and the define
 function(ample_use_library define include_dir libraries)
@@ -61,4 +65,20 @@ if(AMPLE_MUMPS)
     message(FATAL_ERROR "AMPLE_MUMPS=ON: dmumps_c.h not found (Debian: apt-get install libmumps-seq-dev)")
   endif()
   ample_use_library(AMPLE_HAVE_MUMPS "${MUMPS_INCLUDE_DIR}" "${MUMPS_LIBRARIES}")
+endif()
+
+if(AMPLE_PETSC)
+  if(AMPLE_MUMPS)   # the sequential MUMPS brings its own stand-ins for MPI's Fortran calls
+    message(FATAL_ERROR "AMPLE_PETSC=ON and AMPLE_MUMPS=ON in one build: the sequential MUMPS library "
+                        "defines MPI stand-ins that break PETSc's MPI; build them apart (presets fast, mpi)")
+  endif()
+  find_package(PkgConfig REQUIRED)
+  pkg_check_modules(PETSC PETSc)
+  set(MPI_CXX_SKIP_MPICXX ON)
+  find_package(MPI COMPONENTS CXX)
+  if(NOT PETSC_FOUND OR NOT MPI_CXX_FOUND)
+    message(FATAL_ERROR "AMPLE_PETSC=ON: PETSc (pkg-config PETSc) or MPI not found (Debian: apt-get install petsc-dev)")
+  endif()
+  find_library(PETSC_LIBRARY NAMES ${PETSC_LIBRARIES} HINTS ${PETSC_LIBRARY_DIRS})
+  ample_use_library(AMPLE_HAVE_PETSC "${PETSC_INCLUDE_DIRS};${MPI_CXX_INCLUDE_DIRS}" "${PETSC_LIBRARY};${MPI_CXX_LIBRARIES}")
 endif()

@@ -354,7 +354,8 @@ TEST_SUITE("linSolve") {
       const Eigen::VectorXd r = K * c.duvw - oobf;
       for (int d = 1; d < 5; ++d) CHECK(std::abs(r(d)) <= 1e-13);
       const bool ownLU = choice == LinearSolver::UMFPACK || choice == LinearSolver::KRYLOV ||
-                         choice == LinearSolver::MUMPS;  // an unsymmetric pass is theirs, not a fallback
+                         choice == LinearSolver::MUMPS || choice == LinearSolver::PETSC;  // an unsymmetric
+                                                                                         // pass is theirs
       CHECK(S.fallbacks == (ownLU ? 0 : 1));
       CHECK(S.builds == 1);
       FreeSystem T;
@@ -372,6 +373,7 @@ TEST_SUITE("linSolve") {
       const std::string name = solverNames()[size_t(choice)];
       const std::string option = choice == LinearSolver::LDLT_METIS ? "-DAMPLE_METIS=ON"
                                  : choice == LinearSolver::MUMPS    ? "-DAMPLE_MUMPS=ON"
+                                 : choice == LinearSolver::PETSC    ? "-DAMPLE_PETSC=ON"
                                                                     : "-DAMPLE_SUITESPARSE=ON";
       CAPTURE(name);
       Params P = s->params();
@@ -555,5 +557,59 @@ TEST_SUITE("linSolve") {
     const std::string text((std::istreambuf_iterator<char>(json)), std::istreambuf_iterator<char>());
     CHECK(text.find("\"negative_pivots\": " + std::to_string(last) + ",") != std::string::npos);
     CHECK(text.find("\"negative_pivots_from\": " + std::to_string(from)) != std::string::npos);
+  }
+}
+
+// solver=PETSC (built with -DAMPLE_PETSC=ON) on two MPI ranks: PETSc's linear solver server
+// sends each Kt(fd,fd) to both (at least 10 rows a rank here, so the collapse's small
+// system is cut in two) and MUMPS factorises it there; against the same run on one
+// process: the same Newton passes in every load step, every point within 1e-9 of the
+// largest value of its column (the round-off of another factorisation order)
+TEST_SUITE("linSolve") {
+  TEST_CASE("linSolve: solver=PETSC on two MPI ranks (mpirun) takes the one-process run's passes, points within 1e-9" *
+            doctest::skip(!solverBuilt(LinearSolver::PETSC))) {
+    std::filesystem::create_directories(AMPLE_TEST_TMP);
+    const std::string out = std::string(AMPLE_TEST_TMP) + "/petsc_";
+    const std::string run = std::string(AMPLE_BINARY) + " collapse a=2 solver=PETSC --vtk 0 --quiet --out " + out;
+    // a clean environment: this test process may itself be an MPI singleton (the solves above),
+    // whose variables would mislead mpirun
+    const std::string env = "env -i PATH=/usr/local/bin:/usr/bin:/bin HOME=/tmp OMPI_ALLOW_RUN_AS_ROOT=1 "
+                            "OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 OMPI_MCA_mpi_yield_when_idle=1 "
+                            "PETSC_OPTIONS='-pc_mpi_minimum_count_per_rank 10 -mpi_linear_solver_server_view' ";
+    REQUIRE(std::system((env + run + "1 > " + out + "1.log 2>&1").c_str()) == 0);
+    REQUIRE(std::system((env + "mpirun --oversubscribe -n 2 " + run + "2 > " + out + "2.log 2>&1").c_str()) == 0);
+    std::ifstream log(out + "2.log");
+    const std::string text((std::istreambuf_iterator<char>(log)), std::istreambuf_iterator<char>());
+    CHECK(text.find("MPI linear solver server statistics") != std::string::npos);
+    const size_t at = text.find("Avg. Its");                 // the row below the header: ranks first
+    REQUIRE(at != std::string::npos);
+    CHECK(std::atoi(text.c_str() + at + 8) == 2);
+    const auto table = [](const std::string& path) {
+      std::vector<std::vector<double>> rows;
+      std::ifstream f(path);
+      std::string line;
+      std::getline(f, line);
+      while (std::getline(f, line)) {
+        std::vector<double> row;
+        size_t from = 0;
+        for (size_t c; (c = line.find(',', from)) != std::string::npos; from = c + 1)
+          row.push_back(std::strtod(line.c_str() + from, nullptr));
+        row.push_back(std::strtod(line.c_str() + from, nullptr));
+        rows.push_back(row);
+      }
+      return rows;
+    };
+    const auto s1 = table(out + "1/steps.csv"), s2 = table(out + "2/steps.csv");
+    REQUIRE(s1.size() == s2.size());
+    for (size_t k = 0; k < s1.size(); ++k) CHECK(s1[k][2] == s2[k][2]);  // NRit of each step
+    const auto p1 = table(out + "1/mp_final.csv"), p2 = table(out + "2/mp_final.csv");
+    REQUIRE(p1.size() == p2.size());
+    std::vector<double> largest(p1[0].size(), 0.0), worst(p1[0].size(), 0.0);
+    for (size_t p = 0; p < p1.size(); ++p)
+      for (size_t c = 0; c < p1[p].size(); ++c) {
+        largest[c] = std::max(largest[c], std::abs(p1[p][c]));
+        worst[c] = std::max(worst[c], std::abs(p1[p][c] - p2[p][c]));
+      }
+    for (size_t c = 0; c < worst.size(); ++c) CHECK(worst[c] <= 1e-9 * largest[c]);
   }
 }

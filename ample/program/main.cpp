@@ -11,9 +11,25 @@
 //--------------------------------------------------------------------------
 #include "cli.h"
 #include "ample/errors.h"
+#ifdef AMPLE_HAVE_PETSC
+#include "ample/solver/petscSolve.h"
+#endif
 #include <iostream>
 
+static int run(int argc, char** argv);
+
 int main(int argc, char** argv) {
+#ifdef AMPLE_HAVE_PETSC
+  ample::petscStart();      // under mpirun: ranks 1.. serve solver=PETSC's solves and end there
+  const int status = run(argc, argv);
+  ample::petscEnd();
+  return status;
+#else
+  return run(argc, argv);
+#endif
+}
+
+static int run(int argc, char** argv) {
   using namespace ample;
   CliRequest req;
   try {

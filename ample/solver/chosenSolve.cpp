@@ -156,6 +156,14 @@ static Eigen::VectorXd factorisedSolve(FreeSystem& S, const Eigen::VectorXd& rhs
 #ifdef AMPLE_HAVE_MUMPS
   if (S.choice == LinearSolver::MUMPS) return mumpsSolve(S, rhs, singular.substr(1));
 #endif
+#ifdef AMPLE_HAVE_PETSC
+  if (S.choice == LinearSolver::PETSC) {
+    Eigen::VectorXd x;
+    S.factorisations++;
+    if (!S.petsc.solve(S.Kff, rhs, x)) throw RunError(S.petsc.message() + singular.substr(1), Failure::Singular);
+    return x;
+  }
+#endif
 #ifdef AMPLE_HAVE_SUITESPARSE
   if (S.choice == LinearSolver::UMFPACK) {
     S.umfpack.factorize(S.Kff);                         // numeric factorisation only

@@ -64,6 +64,9 @@ void buildFreeSystem(const SpMat& Kt, const std::vector<int>& fd, FreeSystem& S)
 #ifdef AMPLE_HAVE_MUMPS
     case LinearSolver::MUMPS: S.mumps.newPattern(); break;  // analysed at its first factorisation
 #endif
+#ifdef AMPLE_HAVE_PETSC
+    case LinearSolver::PETSC: S.petsc.newPattern(); break;  // built at its first solve
+#endif
     default: break;                                     // not built: refused above
   }
   S.fd = fd;

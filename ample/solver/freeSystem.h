@@ -36,6 +36,8 @@
 //   MUMPS       MUMPS's LDL^T (general symmetric: indefinite too) where Kt(fd,fd)
 //               is symmetric and its solve is accepted, else MUMPS's LU
 //               (mumps.h; AMPLE_MUMPS); the negative pivots of the LDL^T kept
+//   PETSC       MUMPS's LU over the MPI ranks of `mpirun -n N` (petscSolve.h;
+//               AMPLE_PETSC), PETSc's linear solver server
 // A symmetric choice whose pass is not symmetric (or whose factorisation
 // fails, e.g. LL^T of an indefinite Kt, or whose solve has a backward error
 // above 1e-12: linSolve.cpp) falls back to SparseLU for that pass,
@@ -67,6 +69,9 @@
 #ifdef AMPLE_HAVE_MUMPS
 #include "mumps.h"
 #endif
+#ifdef AMPLE_HAVE_PETSC
+#include "petscSolve.h"
+#endif
 
 namespace ample {
 
@@ -91,6 +96,9 @@ struct FreeSystem {
 #endif
 #ifdef AMPLE_HAVE_MUMPS
   MumpsSolver mumps;                           // MUMPS
+#endif
+#ifdef AMPLE_HAVE_PETSC
+  PetscSolver petsc;                           // PETSC
 #endif
   int negativePivots = -1;                     // MUMPS: of the last LDL^T (-1: none, or an LU)
   int builds = 0, fallbacks = 0;               // analyses run; symmetric passes solved by LU

@@ -19,6 +19,7 @@ static std::string optionFor(LinearSolver choice) {
   if (choice == LinearSolver::LDLT_METIS) return "AMPLE_METIS";
   if (choice == LinearSolver::CHOLMOD || choice == LinearSolver::UMFPACK) return "AMPLE_SUITESPARSE";
   if (choice == LinearSolver::MUMPS) return "AMPLE_MUMPS";
+  if (choice == LinearSolver::PETSC) return "AMPLE_PETSC";
   return "";
 }
 
@@ -32,6 +33,9 @@ bool solverBuilt(LinearSolver choice) {
 #endif
 #ifdef AMPLE_HAVE_MUMPS
   if (option == "AMPLE_MUMPS") return true;
+#endif
+#ifdef AMPLE_HAVE_PETSC
+  if (option == "AMPLE_PETSC") return true;
 #endif
   return option.empty();
 }
@@ -49,7 +53,8 @@ void checkSolverBuilt(LinearSolver choice) {
     throw InputError("solver=" + std::to_string(k) + ": no such sparse solver; this build has " + solversBuilt());
   if (solverBuilt(choice)) return;
   const std::string library = optionFor(choice) == "AMPLE_METIS" ? "libmetis-dev"
-                              : optionFor(choice) == "AMPLE_MUMPS" ? "libmumps-seq-dev" : "libsuitesparse-dev";
+                              : optionFor(choice) == "AMPLE_MUMPS" ? "libmumps-seq-dev"
+                              : optionFor(choice) == "AMPLE_PETSC" ? "petsc-dev" : "libsuitesparse-dev";
   throw InputError("solver=" + solverNames()[k] + " is not in this build: it has solver=" + solversBuilt() +
                    "; to add " + solverNames()[k] + ", configure with -D" + optionFor(choice) +
                    "=ON (needs " + library + ") and rebuild");

@@ -3,7 +3,8 @@
 //--------------------------------------------------------------------------
 // The sparse solvers of Kt(fd,fd) (freeSystem.h, docs/scaling.md "The sparse
 // solve"): LU, LDLT, KRYLOV and LDLT_HALVES in every build; LDLT_METIS with -DAMPLE_METIS=ON;
-// CHOLMOD and UMFPACK with -DAMPLE_SUITESPARSE=ON; MUMPS with -DAMPLE_MUMPS=ON
+// CHOLMOD and UMFPACK with -DAMPLE_SUITESPARSE=ON; MUMPS with -DAMPLE_MUMPS=ON; PETSC with
+// -DAMPLE_PETSC=ON
 // (cmake/solverLibraries.cmake).
 // Inputs:  a LinearSolver (mpData.h)
 // Outputs: the names in the order of LinearSolver · the list this build has ·
@@ -20,7 +21,7 @@ namespace ample {
 
 // the names of solver=, in the order of LinearSolver (a constant: reading it runs no code)
 constexpr const char* solverNameList[] = {"LU",     "LDLT",        "LDLT_METIS", "CHOLMOD",
-                                          "UMFPACK", "KRYLOV", "LDLT_HALVES", "MUMPS"};
+                                          "UMFPACK", "KRYLOV", "LDLT_HALVES", "MUMPS", "PETSC"};
 
 const std::vector<std::string>& solverNames();  // solverNameList as strings
 bool solverBuilt(LinearSolver choice);          // LU, LDLT: always; the others with their option

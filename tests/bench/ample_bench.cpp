@@ -9,7 +9,8 @@
 //   scaling     run time and memory against points: compaction to 2^20 points, with
 //               solver=LU (the default), solver=LDLT and solver=KRYLOV
 //   scaling2d   the same for the collapse refined to 147,456 points (a = 2..16, 6x6
-//               points per cell), with solver=LU (the default), LDLT, KRYLOV and LDLT_HALVES,
+//               points per cell), with solver=LU (the default), LDLT, KRYLOV, LDLT_HALVES and,
+//               in a build with -DAMPLE_MUMPS=ON, MUMPS,
 //               and to 589,824 points (a = 32) with all but LU; both suites report the
 //               factorisations, Krylov solves and iterations of each run
 //   threads     the point loop on 1 and 2 OpenMP threads (AMPLE_OPENMP): collapse a = 8,
@@ -31,6 +32,7 @@
 // Outputs: DIR/<suite>.csv (default docs/results); plots: plotting/plot_results.py
 //--------------------------------------------------------------------------
 #include "ample/program/cli.h"
+#include "ample/solver/solverChoice.h"
 #include <algorithm>
 #include <cstdio>
 #include <filesystem>
@@ -169,9 +171,11 @@ std::vector<Suite> suites(bool quick) {
   all.push_back(scal);
   Suite scal2{"scaling2d", {}, {"extent", "height"}};  // the collapse refined: the solver shows
   scal2.extra.insert(scal2.extra.end(), solves.begin(), solves.end());
-  for (const char* solver : {"solver=LU", "solver=LDLT", "solver=KRYLOV", "solver=LDLT_HALVES"})  // (NRitMax 20: the finest
+  std::vector<std::string> solvers2d{"solver=LU", "solver=LDLT", "solver=KRYLOV", "solver=LDLT_HALVES"};
+  if (ample::solverBuilt(ample::LinearSolver::MUMPS)) solvers2d.push_back("solver=MUMPS");  // -DAMPLE_MUMPS=ON
+  for (const std::string& solver : solvers2d)              // (NRitMax 20: the finest
     for (int a : {2, 4, 8, 16, 32})                        // run needs 11 passes); a = 32 (589,824 points)
-      if ((!quick || a <= 4) && (a < 32 || std::string(solver) != "solver=LU")) {  // not with LU (~20 min)
+      if ((!quick || a <= 4) && (a < 32 || solver != "solver=LU")) {  // not with LU (~20 min)
         Args c = A({"collapse", "a=" + std::to_string(a), "mp=6", "NRitMax=20", solver});
         if (a == 32) c.insert(c.end(), {"substeps=4", "split=0.5"});  // the remedies it needs (scaling.md)
         scal2.cases.push_back(c);
