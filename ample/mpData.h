@@ -47,7 +47,7 @@ enum class LinearSolver {                   // the sparse solve of Kt(fd,fd) (fr
     // CHOLMOD supernodal LL^T if symmetric · UMFPACK LU (both -DAMPLE_SUITESPARSE=ON) ·
     // one factorisation a load step, PCG / GMRES preconditioned with it (krylov.h) ·
     // LDL^T of two halves and their interface, the halves on two threads (halvesLDLT.h) ·
-    // MUMPS LDL^T if symmetric, else its LU (-DAMPLE_MUMPS=ON; mumps.h) · MUMPS's LU over
+    // MUMPS LDL^T if symmetric, else its LU (-DAMPLE_MUMPS=ON; mumps.h) · the same over
     // the MPI ranks of `mpirun -n N` by PETSc's linear solver server (-DAMPLE_PETSC=ON; petscSolve.h)
 enum class DomainUpdate {                   // GIMP domain updating, [Lagrangian] sec 6.4, table 2
   None = 0, DetF = 1, Fii = 2, Uii = 3, Corner = 4, FiiVol = 5, FiiVolInc = 6

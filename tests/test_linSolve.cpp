@@ -575,7 +575,8 @@ TEST_SUITE("linSolve") {
     // whose variables would mislead mpirun
     const std::string env = "env -i PATH=/usr/local/bin:/usr/bin:/bin HOME=/tmp OMPI_ALLOW_RUN_AS_ROOT=1 "
                             "OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 OMPI_MCA_mpi_yield_when_idle=1 "
-                            "PETSC_OPTIONS='-pc_mpi_minimum_count_per_rank 10 -mpi_linear_solver_server_view' ";
+                            "PETSC_OPTIONS='-pc_mpi_minimum_count_per_rank 10 -sym_pc_mpi_minimum_count_per_rank 10 "
+                            "-mpi_linear_solver_server_view' ";
     REQUIRE(std::system((env + run + "1 > " + out + "1.log 2>&1").c_str()) == 0);
     REQUIRE(std::system((env + "mpirun --oversubscribe -n 2 " + run + "2 > " + out + "2.log 2>&1").c_str()) == 0);
     std::ifstream log(out + "2.log");

@@ -157,10 +157,17 @@ static Eigen::VectorXd factorisedSolve(FreeSystem& S, const Eigen::VectorXd& rhs
   if (S.choice == LinearSolver::MUMPS) return mumpsSolve(S, rhs, singular.substr(1));
 #endif
 #ifdef AMPLE_HAVE_PETSC
-  if (S.choice == LinearSolver::PETSC) {
+  if (S.choice == LinearSolver::PETSC) {                // as MUMPS: LDL^T where symmetric, else LU
     Eigen::VectorXd x;
+    if (symmetric(S.Kff)) {
+      S.factorisations++;
+      if (S.petsc.solve(S.Kff, rhs, x, true) && x.allFinite() && backwardError(S.Kff, x, rhs) <= 1e-12) return x;
+      if (S.fallbacks++ == 0)
+        S.notes += "ample: solver=PETSC: the LDL^T of Kt(fd,fd) failed or was inexact: the LU solves such passes\n";
+    }
     S.factorisations++;
-    if (!S.petsc.solve(S.Kff, rhs, x)) throw RunError(S.petsc.message() + singular.substr(1), Failure::Singular);
+    if (!S.petsc.solve(S.Kff, rhs, x, false))
+      throw RunError(S.petsc.message() + singular.substr(1), Failure::Singular);
     return x;
   }
 #endif

@@ -36,8 +36,9 @@
 //   MUMPS       MUMPS's LDL^T (general symmetric: indefinite too) where Kt(fd,fd)
 //               is symmetric and its solve is accepted, else MUMPS's LU
 //               (mumps.h; AMPLE_MUMPS); the negative pivots of the LDL^T kept
-//   PETSC       MUMPS's LU over the MPI ranks of `mpirun -n N` (petscSolve.h;
-//               AMPLE_PETSC), PETSc's linear solver server
+//   PETSC       MUMPS over the MPI ranks of `mpirun -n N` (petscSolve.h;
+//               AMPLE_PETSC), PETSc's linear solver server: as MUMPS, its
+//               LDL^T where symmetric and accepted, else its LU
 // A symmetric choice whose pass is not symmetric (or whose factorisation
 // fails, e.g. LL^T of an indefinite Kt, or whose solve has a backward error
 // above 1e-12: linSolve.cpp) falls back to SparseLU for that pass,

@@ -22,6 +22,10 @@ static void startPetsc() {
   PetscOptionsSetValue(nullptr, "-mpi_pc_type", "lu");
   PetscOptionsSetValue(nullptr, "-mpi_pc_factor_mat_solver_type", "mumps");
   PetscOptionsSetValue(nullptr, "-pc_mpi_minimum_count_per_rank", "2000");
+  PetscOptionsSetValue(nullptr, "-sym_mpi_ksp_type", "preonly");  // a symmetric Kt(fd,fd): MUMPS's
+  PetscOptionsSetValue(nullptr, "-sym_mpi_pc_type", "cholesky");  // LDL^T (indefinite too)
+  PetscOptionsSetValue(nullptr, "-sym_mpi_pc_factor_mat_solver_type", "mumps");
+  PetscOptionsSetValue(nullptr, "-sym_pc_mpi_minimum_count_per_rank", "2000");
   PetscInitialize(nullptr, nullptr, nullptr, nullptr);
   started = true;
 }
@@ -39,7 +43,7 @@ void petscEnd() {
 
 struct PetscSolver::Impl {
   Mat A = nullptr;
-  KSP ksp = nullptr;
+  KSP ksp = nullptr, kspSym = nullptr;                  // LU; LDL^T (options prefix sym_)
   Vec b = nullptr, x = nullptr;
   std::vector<PetscInt> rowStart, column;               // Kff's pattern by rows (CSR)
   std::vector<int> fromKff;                             // CSR entry e is Kff's value fromKff[e]
@@ -47,6 +51,7 @@ struct PetscSolver::Impl {
   ~Impl() { clear(); }
   void clear() {
     if (ksp) KSPDestroy(&ksp);
+    if (kspSym) KSPDestroy(&kspSym);
     if (A) MatDestroy(&A);
     if (b) VecDestroy(&b);
     if (x) VecDestroy(&x);
@@ -71,11 +76,16 @@ struct PetscSolver::Impl {
     for (int r = 0; r < n; ++r) perRow[r] = rowStart[r + 1] - rowStart[r];
     if (MatCreateSeqAIJ(PETSC_COMM_SELF, n, n, 0, perRow.data(), &A) ||
         MatSeqAIJSetPreallocationCSR(A, rowStart.data(), column.data(), nullptr) ||
-        MatSetOption(A, MAT_NEW_NONZERO_ALLOCATION_ERR, PETSC_TRUE) || MatCreateVecs(A, &x, &b) ||
-        KSPCreate(PETSC_COMM_SELF, &ksp) || KSPSetType(ksp, KSPPREONLY) || KSPSetOperators(ksp, A, A))
+        MatSetOption(A, MAT_NEW_NONZERO_ALLOCATION_ERR, PETSC_TRUE) || MatCreateVecs(A, &x, &b))
       return false;
+    return makeKsp(ksp, "") && makeKsp(kspSym, "sym_");
+  }
+
+  // a KSP that hands A to the server (PCMPI) and solves it once, with the options of prefix
+  bool makeKsp(KSP& k, const char* prefix) {
     PC pc;
-    return !(KSPGetPC(ksp, &pc) || PCSetType(pc, PCMPI) || KSPSetFromOptions(ksp));
+    return !(KSPCreate(PETSC_COMM_SELF, &k) || KSPSetOptionsPrefix(k, prefix) || KSPSetType(k, KSPPREONLY) ||
+             KSPSetOperators(k, A, A) || KSPGetPC(k, &pc) || PCSetType(pc, PCMPI) || KSPSetFromOptions(k));
   }
 };
 
@@ -89,7 +99,7 @@ PetscSolver& PetscSolver::operator=(const PetscSolver& other) {
 
 void PetscSolver::newPattern() { p_.reset(); }
 
-bool PetscSolver::solve(const SpMat& Kff, const Eigen::VectorXd& rhs, Eigen::VectorXd& out) {
+bool PetscSolver::solve(const SpMat& Kff, const Eigen::VectorXd& rhs, Eigen::VectorXd& out, bool symmetric) {
   startPetsc();                                         // one process: PETSc starts here
   message_.clear();
   if (!p_) {
@@ -109,8 +119,8 @@ bool PetscSolver::solve(const SpMat& Kff, const Eigen::VectorXd& rhs, Eigen::Vec
   for (Eigen::Index r = 0; r < rhs.size(); ++r) v[r] = rhs(r);
   VecRestoreArray(p_->b, &v);
   KSPConvergedReason reason = KSP_DIVERGED_PC_FAILED;
-  if (KSPSolve(p_->ksp, p_->b, p_->x) ||                // the same pattern: values only
-      KSPGetConvergedReason(p_->ksp, &reason) || reason < 0) {
+  KSP ksp = symmetric ? p_->kspSym : p_->ksp;
+  if (KSPSolve(ksp, p_->b, p_->x) || KSPGetConvergedReason(ksp, &reason) || reason < 0) {
     message_ = "PETSc (MUMPS over the MPI ranks) could not solve Kt(fd,fd) (KSPConvergedReason " +
                std::to_string(int(reason)) + ")";
     p_.reset();                                         // start afresh at the next solve
