@@ -41,14 +41,11 @@ enum class CmType { Elastic = 1, VonMises = 2 };                 // [AMPLE]: cmT
 enum class Formulation { UL = 1, PC = 2, SS = 3 };  // updated / previously converged Lagrangian
                                                     // ([Lagrangian]), small strain ([Boundaries] sec 2)
 enum class LinearSolver {                   // the sparse solve of Kt(fd,fd) (freeSystem.h)
-  LU = 0, LDLT = 1, LDLT_METIS = 2, CHOLMOD = 3, UMFPACK = 4, KRYLOV = 5, LDLT_HALVES = 6, MUMPS = 7,
-  PETSC = 8
-};  // SparseLU (the default) · SimplicialLDLT if symmetric · the same with METIS (-DAMPLE_METIS=ON) ·
-    // CHOLMOD supernodal LL^T if symmetric · UMFPACK LU (both -DAMPLE_SUITESPARSE=ON) ·
-    // one factorisation a load step, PCG / GMRES preconditioned with it (krylov.h) ·
-    // LDL^T of two halves and their interface, the halves on two threads (halvesLDLT.h) ·
-    // MUMPS LDL^T if symmetric, else its LU (-DAMPLE_MUMPS=ON; mumps.h) · the same over
-    // the MPI ranks of `mpirun -n N` by PETSc's linear solver server (-DAMPLE_PETSC=ON; petscSolve.h)
+  LU = 0, LDLT = 1, MUMPS = 2, PETSC = 3
+};  // SparseLU (the default) · SimplicialLDLT if symmetric, else SparseLU · MUMPS LDL^T if
+    // symmetric, else its LU (-DAMPLE_MUMPS=ON; mumps.h) · the same over the MPI ranks of
+    // `mpirun -n N` by PETSc's linear solver server (-DAMPLE_PETSC=ON; petscSolve.h);
+    // the choices retired in 2026: docs/solvers.md, "Retired choices"
 enum class DomainUpdate {                   // GIMP domain updating, [Lagrangian] sec 6.4, table 2
   None = 0, DetF = 1, Fii = 2, Uii = 3, Corner = 4, FiiVol = 5, FiiVolInc = 6
 };  //  -     eq 32     eq 33    eq 34    eqs 35-37   eq 38      eq 39

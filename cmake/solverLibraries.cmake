@@ -1,20 +1,14 @@
-# solverLibraries.cmake — optional libraries of the sparse solve (docs/scaling.md, "The sparse solve")
+# solverLibraries.cmake — optional libraries of the sparse solve (docs/solvers.md)
 #
-#   -DAMPLE_METIS=ON        METIS nested-dissection ordering (apt-get install libmetis-dev):
-#                           solver=LDLT_METIS (Eigen's MetisOrdering)
-#   -DAMPLE_SUITESPARSE=ON  SuiteSparse (apt-get install libsuitesparse-dev):
-#                           solver=CHOLMOD (supernodal LL^T) and solver=UMFPACK
 #   -DAMPLE_MUMPS=ON        MUMPS, its sequential library (apt-get install libmumps-seq-dev;
 #                           libopenblas0-serial makes its dense fronts fast): solver=MUMPS
 #   -DAMPLE_PETSC=ON        PETSc with Open MPI (apt-get install petsc-dev): solver=PETSC,
 #                           MUMPS over the ranks of `mpirun -n N ample ...`; not with
 #                           AMPLE_MUMPS (its sequential library's MPI stand-ins clash)
 #
-# All OFF by default: the default build uses Eigen only. Each ON option defines
-# AMPLE_HAVE_METIS / AMPLE_HAVE_SUITESPARSE on amplecore (and so on every program
+# Both OFF by default: the default build uses Eigen only. Each ON option defines
+# AMPLE_HAVE_MUMPS / AMPLE_HAVE_PETSC on amplecore (and so on every program
 # linked to it); a library that is asked for and not found stops the configure.
-option(AMPLE_METIS "METIS ordering for the sparse solve (solver=LDLT_METIS)" OFF)
-option(AMPLE_SUITESPARSE "SuiteSparse solvers for the sparse solve (solver=CHOLMOD, UMFPACK)" OFF)
 option(AMPLE_MUMPS "MUMPS (sequential) for the sparse solve (solver=MUMPS)" OFF)
 option(AMPLE_PETSC "PETSc over MPI ranks for the sparse solve (solver=PETSC)" OFF)
 
@@ -44,13 +38,6 @@ function(ample_find_library option define header suffix package)
   ample_use_library(${define} "${${define}_INCLUDE_DIR}" "${libraries}")
 endfunction()
 
-if(AMPLE_METIS)
-  ample_find_library(AMPLE_METIS AMPLE_HAVE_METIS metis.h "" libmetis-dev metis)
-endif()
-if(AMPLE_SUITESPARSE)
-  ample_find_library(AMPLE_SUITESPARSE AMPLE_HAVE_SUITESPARSE cholmod.h suitesparse libsuitesparse-dev
-                     cholmod umfpack amd colamd suitesparseconfig)
-endif()
 if(AMPLE_MUMPS)
   ample_find_library(AMPLE_MUMPS AMPLE_HAVE_MUMPS dmumps_c.h "" libmumps-seq-dev
                      dmumps_seq mumps_common_seq mpiseq_seq pord_seq)

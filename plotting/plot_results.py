@@ -92,8 +92,9 @@ if comp:
     fig.tight_layout(); fig.savefig(os.path.join(OUT, "compaction.png"), dpi=110); plt.close(fig)
 
 # 2. scaling -----------------------------------------------------------------------------------
-# curves: the compaction column (LU, LDLT) and the collapse with each solver= (LU, LDLT, KRYLOV,
-# LDLT_HALVES; a = 32 with the remedies it needs, not with LU); the collapse
+# curves: the compaction column and the collapse with each solver= (LU, LDLT, MUMPS: a build with
+# -DAMPLE_MUMPS=ON; the collapse at a = 32 with the remedies it needs, not with LU); a solver
+# without rows is left out, and rows of other solvers (older runs) are not drawn; the collapse
 # before the performance work of 2026-12-01/02 (scaling2d_before.csv: main at 8eb7125, SparseLU, run the same day), dashed
 scal = rows("scaling") + rows("scaling2d")
 before = rows("scaling2d_before")
@@ -101,9 +102,10 @@ if scal:
     fig, ax = plt.subplots(1, 2, figsize=(11, 4.2))
     tables.append("\n## Scaling: run time and memory against the number of points\n")
     tables.append("| setup | parameters | points | NR its | wall s | detMPs s | linSolve s | us per point-iteration (detMPs) | peak kB | kB per point |\n|---|---|---|---|---|---|---|---|---|---|\n")
-    curves = [("compaction", sv, m, scal, "compaction solver=" + sv) for sv, m in (("LU", "o-"), ("LDLT", "D-"))]
+    curves = [("compaction", sv, m, scal, "compaction solver=" + sv)
+              for sv, m in (("LU", "o-"), ("LDLT", "D-"), ("MUMPS", "P-"))]
     curves += [("collapse", sv, m, scal, "collapse solver=" + sv)
-               for sv, m in (("LU", "s-"), ("LDLT", "^-"), ("KRYLOV", "v-"), ("LDLT_HALVES", "x-"))]
+               for sv, m in (("LU", "s-"), ("LDLT", "^-"), ("MUMPS", "*-"))]
     curves += [("collapse", "LU", "s--", before, "collapse at 8eb7125 (LU)")]
     for setup, solver, mark, src, label in curves:
         rs = [r for r in src if r["setup"] == setup and r["converged"] == "1" and

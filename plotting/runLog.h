@@ -70,7 +70,6 @@ struct RunLog {
   int luFallbacks = 0;          // passes a symmetric solver= handed to SparseLU
   int splits = 0;               // GIMP points cut in two by the split= remedy (splitPoints)
   long factorisations = 0;      // numeric factorisations of Kt(fd,fd)
-  long krylovSolves = 0, krylovIterations = 0;  // solver=KRYLOV: Krylov solves tried, iterations
   bool converged = true;
   int lastConverged = 0;        // last load step that converged
   std::string message;          // why the run stopped early (empty when complete)

@@ -176,8 +176,7 @@ static std::string summaryJson(const Setup& setup, const Params& P, const Analys
     << (an.loneFrom > 0 ? ",\n  \"lone_from\": " + std::to_string(an.loneFrom) : std::string())
     << (an.ghostFrom > 0 ? ",\n  \"ghost_from\": " + std::to_string(an.ghostFrom) : std::string())
     << negativePivotsJson(log)
-    << ",\n  \"factorisations\": " << log.factorisations << ",\n  \"krylov_solves\": " << log.krylovSolves
-    << ",\n  \"krylov_iterations\": " << log.krylovIterations
+    << ",\n  \"factorisations\": " << log.factorisations
     << ",\n  \"converged\": " << (log.converged ? "true" : "false")
     << ",\n  \"completed\": " << (log.converged ? "true" : "false")
     << ",\n  \"last_converged_step\": " << log.lastConverged

@@ -98,9 +98,9 @@ Params commonParams(int lstps) {
       Param("NRitMax", 10).integer(2, 1000).help("most Newton-Raphson passes per load step"),
       Param("solver", 0).choice(0, {std::begin(solverNameList), std::end(solverNameList)})
           .help("sparse solver of Kt(fd,fd): LU = Eigen's SparseLU (COLAMD); LDLT = Eigen's "
-                "SimplicialLDLT (AMD) in every pass where Kt(fd,fd) is symmetric, else LU; LDLT_METIS "
-                "the same with METIS (-DAMPLE_METIS=ON); CHOLMOD = supernodal LL^T when symmetric, "
-                "UMFPACK = LU (-DAMPLE_SUITESPARSE=ON); the ones this build has: below the list"),
+                "SimplicialLDLT (AMD) in every pass where Kt(fd,fd) is symmetric, else LU; MUMPS = "
+                "MUMPS's LDL^T when symmetric, else its LU (-DAMPLE_MUMPS=ON); PETSC = the same over "
+                "the MPI ranks of mpirun (-DAMPLE_PETSC=ON); the ones this build has: below the list"),
       Param("substeps", 0).integer(0, 30)
           .help("remedy: halvings of a load step allowed when Newton fails (0 = the paper's algorithm)"),
       Param("ghost", 0).range(0, 1e3)

@@ -129,7 +129,6 @@ static Hooks runHooks(Analysis& an, RunLog& log, const RunOptions& opt, RunState
   const BasisLoop basisLoop = large ? opt.basisLoop : elemMPinfo;
   const PointLoop pointLoop = large ? opt.pointLoop : PointLoop(detMPs);
   x.Kff.choice = an.solver;                                          // SparseLU, or LDLT if symmetric
-  x.Kff.nodeCoord = &an.mesh.coord;                                  // (LDLT_HALVES cuts by them)
   const bool chosen = large || an.solver != LinearSolver::LU;
   h.startStep = [&log, &opt](Analysis& a, const Increment& inc) { startStep(a, inc.lstp, log, opt.quiet); };
   h.elemMPinfo = [&T, &x, basisLoop](Mesh& mesh, std::vector<MaterialPoint>& mpData, bool keepCells) {
@@ -404,7 +403,7 @@ static void recordStep(RunLog& log, const Increment& inc, int NRit, double fErr,
   log.totalNRit += NRit;
   log.solverAnalyses = Kff.builds;                                   // so far (summary.json)
   log.luFallbacks = Kff.fallbacks;
-  log.factorisations = Kff.factorisations, log.krylovSolves = Kff.krylovSolves, log.krylovIterations = Kff.krylovIterations;
+  log.factorisations = Kff.factorisations;
   log.steps.push_back({inc.lstp, inc.lf1, NRit, fErr, converged, 0.0, Kff.negativePivots});
 }
 

@@ -5,7 +5,6 @@
 //--------------------------------------------------------------------------
 #include "chosenSolve.h"
 #include "ample/errors.h"
-#include "krylov.h"
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -41,40 +40,27 @@ static bool symmetric(const SpMat& K, bool allEntries = false) {
   return allEntries || mirrored == above || symmetric(K, true);
 }
 
-// normwise backward error of x for K x = b: ||K x - b|| / (||K|| ||x|| + ||b||), infinity norms
-// (the relative change of K and b that x solves exactly; round-off gives ~1e-16 whatever
-// the condition of K, an unstable factorisation much more): krylov.cpp
-static double backwardError(const SpMat& K, const Eigen::VectorXd& x, const Eigen::VectorXd& b) {
-  return backwardError(K, infNorm(K), x, b);
+double infNorm(const SpMat& K) {                        // largest row sum of |K|
+  Eigen::VectorXd rowSum = Eigen::VectorXd::Zero(K.rows());
+  for (int k = 0; k < K.outerSize(); ++k)
+    for (SpMat::InnerIterator it(K, k); it; ++it) rowSum(it.row()) += std::abs(it.value());
+  return K.rows() ? rowSum.maxCoeff() : 0.0;
 }
 
-// a symmetric solver (LDLT, LDLT_METIS, CHOLMOD, LDLT_HALVES) factorises K (no pivoting) and solves;
-// false when it fails (an indefinite K for LL^T) or its backward error exceeds 1e-12
-// (a relative residual would refuse the ill-conditioned column of 2^14 cells: 1e-9..2e-8
-// there with a backward error of 1e-16)
-template <class SymmetricSolver>
-static bool symmetricSolve(SymmetricSolver& s, const SpMat& K, const Eigen::VectorXd& rhs, Eigen::VectorXd& x,
-                           long& factorisations) {
-  s.factorize(K);
-  factorisations++;
-  if (s.info() != Eigen::Success) return false;
-  x = s.solve(rhs);
-  return x.allFinite() && backwardError(K, x, rhs) <= 1e-12;  // (Eigen's max norms skip NaN)
+double backwardError(const SpMat& K, const Eigen::VectorXd& x, const Eigen::VectorXd& b) {
+  return (K * x - b).lpNorm<Eigen::Infinity>() /
+         (infNorm(K) * x.lpNorm<Eigen::Infinity>() + b.lpNorm<Eigen::Infinity>() + 1e-300);
 }
 
-// the chosen symmetric solver on S.Kff; false for LU and UMFPACK
-static bool chosenSymmetricSolve(FreeSystem& S, const Eigen::VectorXd& rhs, Eigen::VectorXd& x) {
-  switch (S.choice) {
-    case LinearSolver::LDLT: return symmetricSolve(S.ldlt, S.Kff, rhs, x, S.factorisations);
-    case LinearSolver::LDLT_HALVES: return symmetricSolve(S.halves, S.Kff, rhs, x, S.factorisations);
-#ifdef AMPLE_HAVE_METIS
-    case LinearSolver::LDLT_METIS: return symmetricSolve(S.ldltMetis, S.Kff, rhs, x, S.factorisations);
-#endif
-#ifdef AMPLE_HAVE_SUITESPARSE
-    case LinearSolver::CHOLMOD: return symmetricSolve(S.cholmod, S.Kff, rhs, x, S.factorisations);
-#endif
-    default: return false;
-  }
+// LDLT: Eigen's SimplicialLDLT factorises K (no pivoting) and solves; false when it fails or
+// its backward error exceeds 1e-12 (a relative residual would refuse the ill-conditioned
+// column of 2^14 cells: 1e-9..2e-8 there with a backward error of 1e-16)
+static bool ldltSolve(FreeSystem& S, const Eigen::VectorXd& rhs, Eigen::VectorXd& x) {
+  S.ldlt.factorize(S.Kff);
+  S.factorisations++;
+  if (S.ldlt.info() != Eigen::Success) return false;
+  x = S.ldlt.solve(rhs);
+  return x.allFinite() && backwardError(S.Kff, x, rhs) <= 1e-12;  // (Eigen's max norms skip NaN)
 }
 
 // SparseLU's numeric factorisation of S.Kff and the solve; RunError when it fails
@@ -88,42 +74,6 @@ static Eigen::VectorXd luSolve(FreeSystem& S, const Eigen::VectorXd& rhs) {
                    "): the problem is singular, e.g. a rigid-body mode without enough boundary conditions "
                    "or a nearly empty cell", Failure::Singular);
   return S.lu.solve(rhs);
-}
-
-// solver=KRYLOV (freeSystem.h): a pass after the first of a load step (NRit > 1) with a factor
-// held is solved by PCG (factor and Kff symmetric) or GMRES preconditioned with that factor,
-// from x = 0 to a backward error of 1e-14; one that reaches 1e-12 within krylovMaxIt
-// iterations and leaves a residual of at most 1e-3 of the right-hand side (the test linSolve
-// applies to every solve: where Kt(fd,fd) is nearly singular x is huge, and a backward error
-// of 1e-12 need not mean that) is accepted. Otherwise (or at NRit == 1, or when the last Krylov solve with this
-// factor needed more than half of krylovMaxIt: the factor has drifted too far to pay) Kff is
-// factorised, LDLT when symmetric and its solve is accepted, else SparseLU, solved directly,
-// and the factor kept for the step
-static Eigen::VectorXd krylovSolve(FreeSystem& S, const Eigen::VectorXd& rhs, int NRit) {
-  using Eigen::VectorXd;
-  if (NRit > 1 && S.factorHeld && 2 * S.krylovLastIterations <= S.krylovMaxIt) {
-    VectorXd x = VectorXd::Zero(rhs.size());
-    KrylovResult k;
-    const Preconditioner byLDLT = [&S](const VectorXd& r) { return VectorXd(S.ldlt.solve(r)); };
-    const Preconditioner byLU = [&S](const VectorXd& r) { return VectorXd(S.lu.solve(r)); };
-    if (S.factorSymmetric && symmetric(S.Kff)) k = pcg(S.Kff, byLDLT, rhs, x, S.krylovMaxIt, 1e-14);
-    else k = gmres(S.Kff, S.factorSymmetric ? byLDLT : byLU, rhs, x, S.krylovMaxIt, 1e-14);
-    S.krylovSolves++;
-    S.krylovIterations += k.iterations;
-    S.krylovLastIterations = k.iterations;
-    if (x.allFinite() && k.backwardError <= 1e-12 && (S.Kff * x - rhs).norm() <= 1e-3 * rhs.norm()) return x;
-  }
-  S.factorHeld = false;
-  S.krylovLastIterations = 0;                           // a new factor: none yet
-  VectorXd x;
-  if (symmetric(S.Kff) && symmetricSolve(S.ldlt, S.Kff, rhs, x, S.factorisations)) {
-    S.factorSymmetric = S.factorHeld = true;
-    return x;
-  }
-  x = luSolve(S, rhs);
-  S.factorSymmetric = false;
-  S.factorHeld = true;
-  return x;
 }
 
 #ifdef AMPLE_HAVE_MUMPS
@@ -147,10 +97,9 @@ static Eigen::VectorXd mumpsSolve(FreeSystem& S, const Eigen::VectorXd& rhs, con
 }
 #endif
 
-// numeric factorisation of S.Kff and the solve: SparseLU (solver=LU), UMFPACK, or a symmetric
-// solver when Kff is symmetric and its solve succeeds (else SparseLU); RunError when LU fails
-static Eigen::VectorXd factorisedSolve(FreeSystem& S, const Eigen::VectorXd& rhs, int NRit) {
-  if (S.choice == LinearSolver::KRYLOV) return krylovSolve(S, rhs, NRit);
+// numeric factorisation of S.Kff and the solve: SparseLU (solver=LU), MUMPS, PETSC, or LDLT
+// when Kff is symmetric and its solve succeeds (else SparseLU); RunError when LU fails
+static Eigen::VectorXd factorisedSolve(FreeSystem& S, const Eigen::VectorXd& rhs) {
   const std::string singular = "): the problem is singular, e.g. a rigid-body mode without enough "
                                "boundary conditions or a nearly empty cell";
 #ifdef AMPLE_HAVE_MUMPS
@@ -171,22 +120,12 @@ static Eigen::VectorXd factorisedSolve(FreeSystem& S, const Eigen::VectorXd& rhs
     return x;
   }
 #endif
-#ifdef AMPLE_HAVE_SUITESPARSE
-  if (S.choice == LinearSolver::UMFPACK) {
-    S.umfpack.factorize(S.Kff);                         // numeric factorisation only
-    S.factorisations++;
-    if (S.umfpack.info() != Eigen::Success)
-      throw RunError("UMFPACK could not factorise the stiffness Kt(fd,fd) (status " +
-                     std::to_string(S.umfpack.umfpackFactorizeReturncode()) + singular, Failure::Singular);
-    return S.umfpack.solve(rhs);
-  }
-#endif
-  if (S.choice != LinearSolver::LU) {                   // LDLT, LDLT_METIS, CHOLMOD, LDLT_HALVES
+  if (S.choice == LinearSolver::LDLT) {
     Eigen::VectorXd x;
-    if (symmetric(S.Kff) && chosenSymmetricSolve(S, rhs, x)) return x;
+    if (symmetric(S.Kff) && ldltSolve(S, rhs, x)) return x;
     if (S.fallbacks++ == 0)                             // said at the run's end (ample: RunLog::notes)
-      S.notes += "ample: solver=" + solverNames()[size_t(S.choice)] + ": Kt(fd,fd) not symmetric to 1e-12, or "
-                 "its factorisation failed or was inexact: SparseLU solves such passes\n";
+      S.notes += "ample: solver=LDLT: Kt(fd,fd) not symmetric to 1e-12, or its factorisation failed "
+                 "or was inexact: SparseLU solves such passes\n";
   }
   return luSolve(S, rhs);
 }
@@ -200,9 +139,9 @@ LinSolveOut chosenSolve(FreeSystem& S, const std::vector<BC>& bc, const SpMat& K
 }
 
 Eigen::VectorXd chosenSolveFree(FreeSystem& S, const SpMat& Kt, const std::vector<int>& fd, const Eigen::VectorXd& rhs,
-                                int NRit) {
+                                int /*NRit*/) {
   refillFreeSystem(Kt, fd, S);                          // S.Kff = Kt(fd,fd), the pattern kept
-  const Eigen::VectorXd x = factorisedSolve(S, rhs, NRit);
+  const Eigen::VectorXd x = factorisedSolve(S, rhs);
   checkSolved(S.Kff, x, rhs);                           // as solveFree: a singular Kt(fd,fd) refused
   return x;
 }

@@ -32,35 +32,13 @@ void extractFreeSystem(const SpMat& Kt, const std::vector<int>& fd, FreeSystem& 
   S.Kff.finalize();
 }
 
-// where the node of each free dof is (none without the nodes' coordinates)
-static std::vector<Eigen::Vector2d> dofPositions(const std::vector<int>& fd,
-                                                 const Eigen::Matrix<double, Eigen::Dynamic, nD, Eigen::RowMajor>* coord) {
-  std::vector<Eigen::Vector2d> at;
-  if (coord)
-    for (int d : fd) at.push_back(coord->row(d / nD).transpose());
-  return at;
-}
-
 void buildFreeSystem(const SpMat& Kt, const std::vector<int>& fd, FreeSystem& S) {
   checkSolverBuilt(S.choice);
   extractFreeSystem(Kt, fd, S);
   S.luAnalysed = false;                                 // LU (or a fallback) analyses it when needed
-  S.factorHeld = false;                                 // KRYLOV: a new pattern, no factor of it
   switch (S.choice) {                                   // symbolic analysis, once per pattern
     case LinearSolver::LU: break;
-    case LinearSolver::LDLT:
-    case LinearSolver::KRYLOV: S.ldlt.analyzePattern(S.Kff); break;
-    case LinearSolver::LDLT_HALVES: S.halves.analyzePattern(S.Kff, dofPositions(fd, S.nodeCoord)); break;
-#ifdef AMPLE_HAVE_METIS
-    case LinearSolver::LDLT_METIS: S.ldltMetis.analyzePattern(S.Kff); break;
-#endif
-#ifdef AMPLE_HAVE_SUITESPARSE
-    case LinearSolver::CHOLMOD:
-      S.cholmod.cholmod().print = 0;                    // not positive definite: our fallback says so
-      S.cholmod.analyzePattern(S.Kff);
-      break;
-    case LinearSolver::UMFPACK: S.umfpack.analyzePattern(S.Kff); break;
-#endif
+    case LinearSolver::LDLT: S.ldlt.analyzePattern(S.Kff); break;
 #ifdef AMPLE_HAVE_MUMPS
     case LinearSolver::MUMPS: S.mumps.newPattern(); break;  // analysed at its first factorisation
 #endif

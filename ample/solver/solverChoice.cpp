@@ -9,6 +9,8 @@
 
 namespace ample {
 
+static_assert(std::size(solverNameList) == size_t(LinearSolver::PETSC) + 1, "a name for each LinearSolver");
+
 const std::vector<std::string>& solverNames() {
   static const std::vector<std::string> names(std::begin(solverNameList), std::end(solverNameList));
   return names;
@@ -16,8 +18,6 @@ const std::vector<std::string>& solverNames() {
 
 // the CMake option that builds a choice ("" for the ones every build has)
 static std::string optionFor(LinearSolver choice) {
-  if (choice == LinearSolver::LDLT_METIS) return "AMPLE_METIS";
-  if (choice == LinearSolver::CHOLMOD || choice == LinearSolver::UMFPACK) return "AMPLE_SUITESPARSE";
   if (choice == LinearSolver::MUMPS) return "AMPLE_MUMPS";
   if (choice == LinearSolver::PETSC) return "AMPLE_PETSC";
   return "";
@@ -25,12 +25,6 @@ static std::string optionFor(LinearSolver choice) {
 
 bool solverBuilt(LinearSolver choice) {
   const std::string option = optionFor(choice);
-#ifdef AMPLE_HAVE_METIS
-  if (option == "AMPLE_METIS") return true;
-#endif
-#ifdef AMPLE_HAVE_SUITESPARSE
-  if (option == "AMPLE_SUITESPARSE") return true;
-#endif
 #ifdef AMPLE_HAVE_MUMPS
   if (option == "AMPLE_MUMPS") return true;
 #endif
@@ -52,9 +46,7 @@ void checkSolverBuilt(LinearSolver choice) {
   if (k >= solverNames().size())
     throw InputError("solver=" + std::to_string(k) + ": no such sparse solver; this build has " + solversBuilt());
   if (solverBuilt(choice)) return;
-  const std::string library = optionFor(choice) == "AMPLE_METIS" ? "libmetis-dev"
-                              : optionFor(choice) == "AMPLE_MUMPS" ? "libmumps-seq-dev"
-                              : optionFor(choice) == "AMPLE_PETSC" ? "petsc-dev" : "libsuitesparse-dev";
+  const std::string library = optionFor(choice) == "AMPLE_MUMPS" ? "libmumps-seq-dev" : "petsc-dev";
   throw InputError("solver=" + solverNames()[k] + " is not in this build: it has solver=" + solversBuilt() +
                    "; to add " + solverNames()[k] + ", configure with -D" + optionFor(choice) +
                    "=ON (needs " + library + ") and rebuild");

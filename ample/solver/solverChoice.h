@@ -1,10 +1,8 @@
 //--------------------------------------------------------------------------
 // solverChoice — the names of solver= and the ones this build has
 //--------------------------------------------------------------------------
-// The sparse solvers of Kt(fd,fd) (freeSystem.h, docs/scaling.md "The sparse
-// solve"): LU, LDLT, KRYLOV and LDLT_HALVES in every build; LDLT_METIS with -DAMPLE_METIS=ON;
-// CHOLMOD and UMFPACK with -DAMPLE_SUITESPARSE=ON; MUMPS with -DAMPLE_MUMPS=ON; PETSC with
-// -DAMPLE_PETSC=ON
+// The sparse solvers of Kt(fd,fd) (freeSystem.h, docs/solvers.md): LU and
+// LDLT in every build; MUMPS with -DAMPLE_MUMPS=ON; PETSC with -DAMPLE_PETSC=ON
 // (cmake/solverLibraries.cmake).
 // Inputs:  a LinearSolver (mpData.h)
 // Outputs: the names in the order of LinearSolver · the list this build has ·
@@ -20,8 +18,7 @@
 namespace ample {
 
 // the names of solver=, in the order of LinearSolver (a constant: reading it runs no code)
-constexpr const char* solverNameList[] = {"LU",     "LDLT",        "LDLT_METIS", "CHOLMOD",
-                                          "UMFPACK", "KRYLOV", "LDLT_HALVES", "MUMPS", "PETSC"};
+constexpr const char* solverNameList[] = {"LU", "LDLT", "MUMPS", "PETSC"};
 
 const std::vector<std::string>& solverNames();  // solverNameList as strings
 bool solverBuilt(LinearSolver choice);          // LU, LDLT: always; the others with their option

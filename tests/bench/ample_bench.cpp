@@ -7,15 +7,14 @@
 // each run come from its summary.json. Suites (all when none is named):
 //   compaction  error (eq 37) and time, nelsy = 2^2..2^13, mpType 1-4
 //   scaling     run time and memory against points: compaction to 2^20 points, with
-//               solver=LU (the default), solver=LDLT and solver=KRYLOV
+//               solver=LU (the default), solver=LDLT and, in a build with
+//               -DAMPLE_MUMPS=ON, solver=MUMPS
 //   scaling2d   the same for the collapse refined to 147,456 points (a = 2..16, 6x6
-//               points per cell), with solver=LU (the default), LDLT, KRYLOV, LDLT_HALVES and,
-//               in a build with -DAMPLE_MUMPS=ON, MUMPS,
-//               and to 589,824 points (a = 32) with all but LU; both suites report the
-//               factorisations, Krylov solves and iterations of each run
+//               points per cell), with solver=LU (the default), LDLT and, in a build
+//               with -DAMPLE_MUMPS=ON, MUMPS, and to 589,824 points (a = 32) with all
+//               but LU; both suites report the factorisations of each run
 //   threads     the point loop on 1 and 2 OpenMP threads (AMPLE_OPENMP): collapse a = 8,
-//               16 (solver=LDLT, and LDLT_HALVES, whose halves share the threads too),
-//               compaction 2^16 cells
+//               16 (solver=LDLT), compaction 2^16 cells
 //   beam        tip displacement for a = 1, 2, 4 (6x6) and mp = 2, 3, 4 (a = 2),
 //               with the load-displacement history of each run
 //   collapse    extent and height, [AMPLE] table 5 and [Lagrangian] table 6
@@ -158,21 +157,21 @@ std::vector<Suite> suites(bool quick) {
       comp.cases.push_back(A({"compaction", "mpType=" + std::to_string(t), "nelsy=" + std::to_string(1 << e)}));
   all.push_back(comp);
 
-  const std::vector<std::string> solves{"factorisations", "krylov_solves", "krylov_iterations"};
-  Suite scal{"scaling", {}, {"error"}};
-  scal.extra.insert(scal.extra.end(), solves.begin(), solves.end());
-  for (const char* solver : {"", "solver=LDLT", "solver=KRYLOV"})  // SparseLU (the default), LDLT, KRYLOV
+  const bool mumps = ample::solverBuilt(ample::LinearSolver::MUMPS);  // -DAMPLE_MUMPS=ON
+  Suite scal{"scaling", {}, {"error", "factorisations"}};
+  std::vector<std::string> solvers1d{"", "solver=LDLT"};   // SparseLU (the default), LDLT
+  if (mumps) solvers1d.push_back("solver=MUMPS");
+  for (const std::string& solver : solvers1d)
     for (int e = 10; e <= (quick ? 12 : 18); ++e) {  // from 2^16 cells the residual floor of the
       Args c = A({"compaction", "nelsy=" + std::to_string(1 << e),  // column lies near 1e-9:
                   e >= 16 ? "tol=1e-8" : "tol=1e-9"});              // tol 1e-8 there
-      if (*solver) c.push_back(solver);
+      if (!solver.empty()) c.push_back(solver);
       scal.cases.push_back(c);
     }
   all.push_back(scal);
-  Suite scal2{"scaling2d", {}, {"extent", "height"}};  // the collapse refined: the solver shows
-  scal2.extra.insert(scal2.extra.end(), solves.begin(), solves.end());
-  std::vector<std::string> solvers2d{"solver=LU", "solver=LDLT", "solver=KRYLOV", "solver=LDLT_HALVES"};
-  if (ample::solverBuilt(ample::LinearSolver::MUMPS)) solvers2d.push_back("solver=MUMPS");  // -DAMPLE_MUMPS=ON
+  Suite scal2{"scaling2d", {}, {"extent", "height", "factorisations"}};  // the collapse refined: the solver shows
+  std::vector<std::string> solvers2d{"solver=LU", "solver=LDLT"};
+  if (mumps) solvers2d.push_back("solver=MUMPS");
   for (const std::string& solver : solvers2d)              // (NRitMax 20: the finest
     for (int a : {2, 4, 8, 16, 32})                        // run needs 11 passes); a = 32 (589,824 points)
       if ((!quick || a <= 4) && (a < 32 || solver != "solver=LU")) {  // not with LU (~20 min)
@@ -183,10 +182,8 @@ std::vector<Suite> suites(bool quick) {
   all.push_back(scal2);
   Suite thr{"threads", {}, {"extent", "height", "error"}};  // each case on 1 then 2 threads, in turn:
   std::vector<Args> threaded;                               // a drift of the machine's speed hits both
-  for (const char* solver : {"solver=LDLT", "solver=LDLT_HALVES"}) {  // the halves: two threads solve too
-    threaded.push_back(A({"collapse", "a=8", "mp=6", solver}));
-    if (!quick) threaded.push_back(A({"collapse", "a=16", "mp=6", "NRitMax=20", solver}));
-  }
+  threaded.push_back(A({"collapse", "a=8", "mp=6", "solver=LDLT"}));
+  if (!quick) threaded.push_back(A({"collapse", "a=16", "mp=6", "NRitMax=20", "solver=LDLT"}));
   threaded.push_back(A({"compaction", quick ? "nelsy=8192" : "nelsy=65536", "tol=1e-8"}));
   for (const Args& c : threaded)
     for (const char* t : {"threads=1", "threads=2"}) {

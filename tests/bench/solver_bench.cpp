@@ -1,5 +1,5 @@
 //--------------------------------------------------------------------------
-// solver_bench — orderings and sparse solvers on the collapse's Kt(fd,fd)
+// solver_bench — orderings of Eigen's sparse solvers on the collapse's Kt(fd,fd)
 //--------------------------------------------------------------------------
 // "The sparse solve" (docs/scaling.md). For the collapse ([AMPLE]
 // sec 5.3) at grid refinement a (h = 2 m / a) with mp x mp points per cell it
@@ -7,16 +7,12 @@
 // (setupGrid, elemMPinfo, detFDoFs, stiffnessPattern, detMPs at uvw = 0: the
 // elastic tangent; --after: a later step, see collapseKff) and solves
 // Kt(fd,fd) x = b with b = Kt(fd,fd) x*, x*_i = sin(i + 1), by each solver:
-//   LU_COLAMD, LU_AMD, LU_METIS    Eigen's SparseLU with that column ordering
+//   LU_COLAMD, LU_AMD              Eigen's SparseLU with that column ordering
 //   LU_AMD_T0.1                    SparseLU, AMD, diagonal pivots down to 0.1 of the largest
 //   LU_AMD_SYM                     SparseLU, AMD, in SuperLU's symmetric mode (diagonal
 //                                  pivots down to 1e-3 of the column's largest)
-//   LDLT_AMD, LDLT_METIS           Eigen's SimplicialLDLT with that ordering
-//   CHOLMOD_LLT                    CHOLMOD supernodal LL^T (its own ordering
-//                                  choice: AMD, METIS when AMD fills badly)
-//   CHOLMOD_LDLT                   CHOLMOD simplicial LDL^T
-//   UMFPACK                        UMFPACK LU (its own ordering choice)
-// METIS cases need -DAMPLE_METIS=ON, the SuiteSparse ones -DAMPLE_SUITESPARSE=ON.
+//   LDLT_AMD                       Eigen's SimplicialLDLT with AMD (solver=LDLT)
+// (MUMPS, solver=MUMPS, is measured by whole runs: ample_bench's scaling suites.)
 // Each (size, solver) runs --reps times, each in a child process (fork) so
 // that its peak memory (wait4's ru_maxrss, which includes the parent's pages
 // holding Kt(fd,fd): `base_MB`) and its failures are its own. A child that
@@ -30,6 +26,8 @@
 //          factorise_s, solve_s, fill (nonzeros of L+U or of L), factor_MB
 //          (fill x 12 bytes: a double and an index), peak_MB, base_MB, the
 //          relative error |x - x*| / |x*| and residual |K x - b| / |b|
+//          (docs/results/ordering*.csv also hold runs of the retired METIS and
+//          SuiteSparse cases, with a last column ordering_chosen)
 // Build:   cmake --build --preset release --target solver_bench
 //--------------------------------------------------------------------------
 #include "ample/program/cli.h"
@@ -41,14 +39,6 @@
 #include <Eigen/OrderingMethods>
 #include <Eigen/SparseCholesky>
 #include <Eigen/SparseLU>
-#ifdef AMPLE_HAVE_METIS
-#include <iostream>  // Eigen/MetisSupport uses std::cerr without including it
-#include <Eigen/MetisSupport>
-#endif
-#ifdef AMPLE_HAVE_SUITESPARSE
-#include <Eigen/CholmodSupport>
-#include <Eigen/UmfPackSupport>
-#endif
 #include <malloc.h>
 #include <csignal>
 #include <cmath>
@@ -86,7 +76,6 @@ struct Timing {
   double analyse = 0, factorise = 0, solve = 0;  // seconds
   double fill = 0;                               // nonzeros of L+U (LU) or of L (LL^T, LDL^T)
   double error = 0, residual = 0;                // |x - x*| / |x*|, |K x - b| / |b|
-  std::string note;                              // e.g. the ordering CHOLMOD chose
 };
 
 //--------------------------------------------------------------------------
@@ -125,7 +114,7 @@ double ldltFill(LDLT& s) { return double(s.matrixL().nestedExpression().nonZeros
 // runCase — one named solver on K (in the child process)
 //--------------------------------------------------------------------------
 // Inputs:  name (the list in the header above) · K · b · x*
-// Outputs: Timing; throws std::runtime_error for a name this build does not have
+// Outputs: Timing; throws std::runtime_error for a name not in the list
 //--------------------------------------------------------------------------
 Timing runCase(const std::string& name, const SpMat& K, const Eigen::VectorXd& b, const Eigen::VectorXd& xStar) {
   using namespace Eigen;
@@ -152,45 +141,7 @@ Timing runCase(const std::string& name, const SpMat& K, const Eigen::VectorXd& b
     SimplicialLDLT<SpMat, Lower, AMDOrdering<int>> s;
     return timeSolver<decltype(s)>(s, K, b, xStar, ldltFill<decltype(s)>);
   }
-#ifdef AMPLE_HAVE_METIS
-  if (name == "LU_METIS") {
-    SparseLU<SpMat, MetisOrdering<int>> s;
-    return timeSolver<decltype(s)>(s, K, b, xStar, luFill<decltype(s)>);
-  }
-  if (name == "LDLT_METIS") {
-    SimplicialLDLT<SpMat, Lower, MetisOrdering<int>> s;
-    return timeSolver<decltype(s)>(s, K, b, xStar, ldltFill<decltype(s)>);
-  }
-#endif
-#ifdef AMPLE_HAVE_SUITESPARSE
-  auto cholmodFill = [](auto& s) {  // lnz and the ordering chosen, from cholmod_analyze
-    return double(s.cholmod().lnz);
-  };
-  auto cholmodNote = [](auto& s) {
-    const int m = s.cholmod().method[s.cholmod().selected].ordering;
-    return std::string(m == CHOLMOD_AMD ? "AMD" : m == CHOLMOD_METIS ? "METIS" : m == CHOLMOD_NESDIS ? "NESDIS"
-                                                                                                       : "other");
-  };
-  if (name == "CHOLMOD_LLT") {
-    CholmodSupernodalLLT<SpMat, Lower> s;
-    Timing t = timeSolver<decltype(s)>(s, K, b, xStar, cholmodFill);
-    t.note = cholmodNote(s);
-    return t;
-  }
-  if (name == "CHOLMOD_LDLT") {
-    CholmodSimplicialLDLT<SpMat, Lower> s;
-    Timing t = timeSolver<decltype(s)>(s, K, b, xStar, cholmodFill);
-    t.note = cholmodNote(s);
-    return t;
-  }
-  if (name == "UMFPACK") {
-    UmfPackLU<SpMat> s;
-    return timeSolver<decltype(s)>(s, K, b, xStar, [](UmfPackLU<SpMat>& u) {
-      return double(u.matrixL().nonZeros() + u.matrixU().nonZeros());  // extracted after the timing
-    });
-  }
-#endif
-  throw std::runtime_error("not in this build");
+  throw std::runtime_error("no such case");
 }
 
 //--------------------------------------------------------------------------
@@ -230,8 +181,7 @@ struct Options {
   std::vector<int> a{2, 4, 8, 16, 32};
   int mp = 6, reps = 3, limit = 900, after = 0;
   double memGB = 12;
-  std::vector<std::string> cases{"LU_COLAMD",  "LU_AMD",      "LU_AMD_T0.1",  "LU_AMD_SYM", "LU_METIS", "LDLT_AMD",
-                                 "LDLT_METIS", "CHOLMOD_LLT", "CHOLMOD_LDLT", "UMFPACK"};
+  std::vector<std::string> cases{"LU_COLAMD", "LU_AMD", "LU_AMD_T0.1", "LU_AMD_SYM", "LDLT_AMD"};
   std::string out = "docs/results/ordering.csv";
 };
 
@@ -281,7 +231,7 @@ std::string forkedCase(const std::string& name, const SpMat& K, const Eigen::Vec
     try {
       const Timing r = runCase(name, K, b, xStar);
       s << "ok " << r.analyse << " " << r.factorise << " " << r.solve << " " << r.fill << " " << r.error
-        << " " << r.residual << " " << (r.note.empty() ? "-" : r.note);
+        << " " << r.residual;
     } catch (const std::bad_alloc&) {
       s << "nomem";
     } catch (const std::exception& e) {
@@ -306,8 +256,7 @@ std::string forkedCase(const std::string& name, const SpMat& K, const Eigen::Vec
   in >> word;
   if (word == "nomem") return "no memory";
   if (word != "ok") return "failed:" + msg.substr(std::min(msg.size(), size_t(6)));
-  in >> t.analyse >> t.factorise >> t.solve >> t.fill >> t.error >> t.residual >> t.note;
-  if (t.note == "-") t.note.clear();
+  in >> t.analyse >> t.factorise >> t.solve >> t.fill >> t.error >> t.residual;
   return "ok";
 }
 
@@ -318,7 +267,7 @@ int main(int argc, char** argv) {
   std::ofstream csv(o.out);
   if (!csv) { std::cerr << "solver_bench: cannot write " << o.out << "\n"; return 1; }
   csv << "a,after_steps,nmp,nfd,nnz_K,solver,rep,status,analyse_s,factorise_s,solve_s,fill,factor_MB,peak_MB,base_MB,"
-         "error,residual,ordering_chosen\n";
+         "error,residual\n";
   for (int a : o.a) {
     long nmp = 0;
     const double t0 = now();
@@ -336,10 +285,10 @@ int main(int argc, char** argv) {
         double peak = 0;
         const std::string status = forkedCase(name, K, b, xStar, o, t, peak);
         char line[512];
-        std::snprintf(line, sizeof line, "%d,%d,%ld,%ld,%ld,%s,%d,%s,%.4g,%.4g,%.4g,%.0f,%.1f,%.0f,%.0f,%.2g,%.2g,%s\n",
+        std::snprintf(line, sizeof line, "%d,%d,%ld,%ld,%ld,%s,%d,%s,%.4g,%.4g,%.4g,%.0f,%.1f,%.0f,%.0f,%.2g,%.2g\n",
                       a, o.after, nmp, long(K.rows()), long(K.nonZeros()), name.c_str(), rep, status.c_str(),
                       t.analyse, t.factorise, t.solve, t.fill, t.fill * 12 / 1048576.0, peak, base, t.error,
-                      t.residual, t.note.c_str());
+                      t.residual);
         csv << line << std::flush;
         std::fputs(line, stdout);
         std::fflush(stdout);
