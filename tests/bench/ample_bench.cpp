@@ -11,8 +11,9 @@
 //               -DAMPLE_MUMPS=ON, solver=MUMPS
 //   scaling2d   the same for the collapse refined to 147,456 points (a = 2..16, 6x6
 //               points per cell), with solver=LU (the default), LDLT and, in a build
-//               with -DAMPLE_MUMPS=ON, MUMPS, and to 589,824 points (a = 32) with all
-//               but LU; both suites report the factorisations of each run
+//               with -DAMPLE_MUMPS=ON, MUMPS (with -DAMPLE_PETSC=ON: PETSC, one process),
+//               and to 589,824 points (a = 32) with all but LU; both suites report the
+//               factorisations of each run
 //   threads     the point loop on 1 and 2 OpenMP threads (AMPLE_OPENMP): collapse a = 8,
 //               16 (solver=LDLT), compaction 2^16 cells
 //   beam        tip displacement for a = 1, 2, 4 (6x6) and mp = 2, 3, 4 (a = 2),
@@ -27,7 +28,8 @@
 // A case argument threads=N (the bench's own, not the program's) runs that case
 // with N OpenMP threads (omp_set_num_threads in the child); without it the
 // OpenMP default (OMP_NUM_THREADS, else the cores) holds.
-// Usage:   ample_bench [suite ...] [--out DIR] [--quick]
+// --only ARG runs only the cases that have the argument ARG (e.g. --only solver=MUMPS).
+// Usage:   ample_bench [suite ...] [--out DIR] [--quick] [--only ARG]
 // Outputs: DIR/<suite>.csv (default docs/results); plots: plotting/plot_results.py
 //--------------------------------------------------------------------------
 #include "ample/program/cli.h"
@@ -158,6 +160,7 @@ std::vector<Suite> suites(bool quick) {
   all.push_back(comp);
 
   const bool mumps = ample::solverBuilt(ample::LinearSolver::MUMPS);  // -DAMPLE_MUMPS=ON
+  const bool petsc = ample::solverBuilt(ample::LinearSolver::PETSC);  // -DAMPLE_PETSC=ON: one process
   Suite scal{"scaling", {}, {"error", "factorisations"}};
   std::vector<std::string> solvers1d{"", "solver=LDLT"};   // SparseLU (the default), LDLT
   if (mumps) solvers1d.push_back("solver=MUMPS");
@@ -172,6 +175,7 @@ std::vector<Suite> suites(bool quick) {
   Suite scal2{"scaling2d", {}, {"extent", "height", "factorisations"}};  // the collapse refined: the solver shows
   std::vector<std::string> solvers2d{"solver=LU", "solver=LDLT"};
   if (mumps) solvers2d.push_back("solver=MUMPS");
+  if (petsc) solvers2d.push_back("solver=PETSC");       // (its ranks need mpirun: docs/solvers.md)
   for (const std::string& solver : solvers2d)              // (NRitMax 20: the finest
     for (int a : {2, 4, 8, 16, 32})                        // run needs 11 passes); a = 32 (589,824 points)
       if ((!quick || a <= 4) && (a < 32 || solver != "solver=LU")) {  // not with LU (~20 min)
@@ -271,11 +275,13 @@ std::vector<Suite> suites(bool quick) {
 int main(int argc, char** argv) {
   std::string out = "docs/results";
   bool quick = false;
+  std::string only;                                     // run only the cases with this argument
   std::vector<std::string> wanted;
   for (int i = 1; i < argc; ++i) {
     const std::string a = argv[i];
     if (a == "--out" && i + 1 < argc) out = argv[++i];
     else if (a == "--quick") quick = true;
+    else if (a == "--only" && i + 1 < argc) only = argv[++i];
     else wanted.push_back(a);
   }
   std::filesystem::create_directories(out + "/runs");
@@ -283,6 +289,7 @@ int main(int argc, char** argv) {
     if (!wanted.empty() && std::find(wanted.begin(), wanted.end(), s.name) == wanted.end()) continue;
     std::string csv = header(s.extra);
     for (size_t c = 0; c < s.cases.size(); ++c) {
+      if (!only.empty() && std::find(s.cases[c].begin(), s.cases[c].end(), only) == s.cases[c].end()) continue;
       const std::string dir = out + "/runs/" + s.name + "_" + std::to_string(c);
       const Run r = run(s.cases[c], dir);
       csv += row(s.cases[c], r, s.extra);
