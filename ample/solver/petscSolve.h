@@ -14,7 +14,7 @@
 // changed (the matrix is built again); the values are copied every pass.
 // Inputs:  Kff (nfd x nfd, compressed) · rhs (nfd)
 // Outputs: x (nfd) · false and message() where the solve fails (a singular Kff)
-// Tests:   tests/test_linSolve.cpp (every solver= of the build)
+// Tests:   tests/test_linSolve.cpp (every solver= of the build); tests/petsc_ranks.py (two MPI ranks)
 //--------------------------------------------------------------------------
 #pragma once
 #include "ample/mpData.h"
