@@ -76,26 +76,25 @@ static Eigen::VectorXd luSolve(FreeSystem& S, const Eigen::VectorXd& rhs) {
   return S.lu.solve(rhs);
 }
 
-#ifdef AMPLE_HAVE_MUMPS
-// solver=MUMPS: its LDL^T where S.Kff is symmetric and the solve is accepted (as symmetricSolve),
-// else its LU; RunError when that fails too
-static Eigen::VectorXd mumpsSolve(FreeSystem& S, const Eigen::VectorXd& rhs, const std::string& singular) {
-  S.negativePivots = -1;
+// solver=MUMPS and solver=PETSC (MUMPS by itself or over the MPI ranks): MUMPS's LDL^T where
+// S.Kff is symmetric and the solve is accepted (as ldltSolve), else its LU; RunError when that
+// fails too. factorSolve(symmetric, x): one factorisation and solve, false when it fails;
+// message(): why it failed
+template <class FactorSolve, class Message>
+static Eigen::VectorXd mumpsSolve(FreeSystem& S, const Eigen::VectorXd& rhs, FactorSolve factorSolve,
+                                  Message message, const std::string& singular) {
+  Eigen::VectorXd x;
   if (symmetric(S.Kff)) {
     S.factorisations++;
-    if (S.mumps.factorize(S.Kff, true)) {
-      const Eigen::VectorXd x = S.mumps.solve(rhs);
-      S.negativePivots = S.mumps.negativePivots();
-      if (x.allFinite() && backwardError(S.Kff, x, rhs) <= 1e-12) return x;
-    }
+    if (factorSolve(true, x) && x.allFinite() && backwardError(S.Kff, x, rhs) <= 1e-12) return x;
     if (S.fallbacks++ == 0)                             // said at the run's end, as below
-      S.notes += "ample: solver=MUMPS: its LDL^T of Kt(fd,fd) failed or was inexact: its LU solves such passes\n";
+      S.notes += "ample: solver=" + solverNames()[size_t(S.choice)] +
+                 ": MUMPS's LDL^T of Kt(fd,fd) failed or was inexact: its LU solves such passes\n";
   }
   S.factorisations++;
-  if (!S.mumps.factorize(S.Kff, false)) throw RunError(S.mumps.message() + singular, Failure::Singular);
-  return S.mumps.solve(rhs);
+  if (!factorSolve(false, x)) throw RunError(message() + singular, Failure::Singular);
+  return x;
 }
-#endif
 
 // numeric factorisation of S.Kff and the solve: SparseLU (solver=LU), MUMPS, PETSC, or LDLT
 // when Kff is symmetric and its solve succeeds (else SparseLU); RunError when LU fails
@@ -103,21 +102,23 @@ static Eigen::VectorXd factorisedSolve(FreeSystem& S, const Eigen::VectorXd& rhs
   const std::string singular = "): the problem is singular, e.g. a rigid-body mode without enough "
                                "boundary conditions or a nearly empty cell";
 #ifdef AMPLE_HAVE_MUMPS
-  if (S.choice == LinearSolver::MUMPS) return mumpsSolve(S, rhs, singular.substr(1));
+  if (S.choice == LinearSolver::MUMPS) {
+    S.negativePivots = -1;
+    const auto factorSolve = [&S, &rhs](bool symmetric, Eigen::VectorXd& x) {
+      if (!S.mumps.factorize(S.Kff, symmetric)) return false;
+      x = S.mumps.solve(rhs);
+      if (symmetric) S.negativePivots = S.mumps.negativePivots();
+      return true;
+    };
+    return mumpsSolve(S, rhs, factorSolve, [&S] { return S.mumps.message(); }, singular.substr(1));
+  }
 #endif
 #ifdef AMPLE_HAVE_PETSC
-  if (S.choice == LinearSolver::PETSC) {                // as MUMPS: LDL^T where symmetric, else LU
-    Eigen::VectorXd x;
-    if (symmetric(S.Kff)) {
-      S.factorisations++;
-      if (S.petsc.solve(S.Kff, rhs, x, true) && x.allFinite() && backwardError(S.Kff, x, rhs) <= 1e-12) return x;
-      if (S.fallbacks++ == 0)
-        S.notes += "ample: solver=PETSC: the LDL^T of Kt(fd,fd) failed or was inexact: the LU solves such passes\n";
-    }
-    S.factorisations++;
-    if (!S.petsc.solve(S.Kff, rhs, x, false))
-      throw RunError(S.petsc.message() + singular.substr(1), Failure::Singular);
-    return x;
+  if (S.choice == LinearSolver::PETSC) {
+    const auto factorSolve = [&S, &rhs](bool symmetric, Eigen::VectorXd& x) {
+      return S.petsc.solve(S.Kff, rhs, x, symmetric);
+    };
+    return mumpsSolve(S, rhs, factorSolve, [&S] { return S.petsc.message(); }, singular.substr(1));
   }
 #endif
   if (S.choice == LinearSolver::LDLT) {
