@@ -93,7 +93,7 @@ if comp:
 
 # 2. scaling -----------------------------------------------------------------------------------
 # curves: the compaction column and the collapse with each solver= (LU, LDLT, MUMPS: a build with
-# -DAMPLE_MUMPS=ON; the collapse at a = 32 with the remedies it needs, not with LU); a solver
+# -DAMPLE_MUMPS=ON; PETSC, one process: -DAMPLE_PETSC=ON; the collapse at a = 32 with the remedies it needs, not with LU); a solver
 # without rows is left out, and rows of other solvers (older runs) are not drawn; the collapse
 # before the performance work of 2026-12-01/02 (scaling2d_before.csv: main at 8eb7125, SparseLU, run the same day), dashed
 scal = rows("scaling") + rows("scaling2d")
@@ -105,7 +105,7 @@ if scal:
     curves = [("compaction", sv, m, scal, "compaction solver=" + sv)
               for sv, m in (("LU", "o-"), ("LDLT", "D-"), ("MUMPS", "P-"))]
     curves += [("collapse", sv, m, scal, "collapse solver=" + sv)
-               for sv, m in (("LU", "s-"), ("LDLT", "^-"), ("MUMPS", "*-"))]
+               for sv, m in (("LU", "s-"), ("LDLT", "^-"), ("MUMPS", "*-"), ("PETSC", "x-"))]
     curves += [("collapse", "LU", "s--", before, "collapse at 8eb7125 (LU)")]
     for setup, solver, mark, src, label in curves:
         rs = [r for r in src if r["setup"] == setup and r["converged"] == "1" and
