@@ -9,8 +9,27 @@
 #include <dmumps_c.h>
 #include <cmath>
 #include <vector>
+#if defined(__GLIBC__)
+#include <malloc.h>
+#endif
 
 namespace ample {
+
+// MUMPS allocates its working space (a few hundred MB at 66,306 dofs) at every numeric
+// factorisation and frees it after; glibc hands blocks that large back to the system, so
+// every factorisation faulted in and zeroed its pages again: 7 % of the collapse a = 32's
+// run time in the kernel (perf, 2026-12-05). Kept in the heap instead (as an MPI library
+// that pins memory does too: PETSc's runs did not pay it), once per process
+static void keepLargeBlocks() {
+#if defined(__GLIBC__)
+  static const bool once = [] {
+    mallopt(M_MMAP_MAX, 0);                             // no block of its own mapping
+    mallopt(M_TRIM_THRESHOLD, 1 << 30);                 // the heap's top kept up to 1 GiB free
+    return true;
+  }();
+  (void)once;
+#endif
+}
 
 struct MumpsSolver::Instance {
   DMUMPS_STRUC_C id{};
@@ -21,6 +40,7 @@ struct MumpsSolver::Instance {
   std::vector<int> fromK;                               // entry k is K's value fromK[k]
 
   explicit Instance(bool sym) : symmetric(sym) {
+    keepLargeBlocks();
     id.job = -1;                                        // initialise
     id.par = 1;                                         // the host works too (one process)
     id.sym = sym ? 2 : 0;                               // general symmetric LDL^T, or LU
@@ -29,7 +49,10 @@ struct MumpsSolver::Instance {
     id.icntl[0] = -1, id.icntl[1] = -1, id.icntl[2] = -1, id.icntl[3] = 0;  // ICNTL(1-4): silent
     id.icntl[5] = 0;                                    // ICNTL(6): no permutation by values,
     id.icntl[11] = 1;                                   // ICNTL(12): plain ordering: the analysis
-  }                                                     // reads the pattern alone
+                                                        // reads the pattern alone;
+    id.icntl[6] = 2;                                    // ICNTL(7): AMF, PETSc's choice too (the
+  }                                                     // automatic one takes SCOTCH above some
+                                                        // size, whose runs differed in round-off)
   ~Instance() {
     id.job = -2;                                        // free MUMPS's memory
     dmumps_c(&id);
