@@ -42,12 +42,12 @@ Eigen::VectorXd solveFree(const SpMat& Kt, const std::vector<int>& fd, const Eig
                    "): the problem is singular, e.g. a rigid-body mode without enough boundary "
                    "conditions or a nearly empty cell", Failure::Singular);
   const Eigen::VectorXd x = lu.solve(rhs);
-  checkSolved(Kff, x, rhs);
+  checkSolved(Kff * x - rhs, rhs);
   return x;
 }
 
-void checkSolved(const SpMat& Kff, const Eigen::VectorXd& x, const Eigen::VectorXd& rhs) {
-  const double res = (Kff * x - rhs).norm(), scale = rhs.norm() + 1e-300;
+void checkSolved(const Eigen::VectorXd& residual, const Eigen::VectorXd& rhs) {
+  const double res = residual.norm(), scale = rhs.norm() + 1e-300;
   if (!(res <= 1e-3 * scale))                           // a zero pivot: no solution exists
     throw RunError("the stiffness Kt(fd,fd) is singular (linear solve residual " +
                    std::to_string(res / scale) + " of the right-hand side): a rigid-body mode "

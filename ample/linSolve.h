@@ -25,8 +25,8 @@ struct LinSolveOut {
 
 // x with Kt(fd,fd) x = rhs, by SparseLU; RunError when Kt(fd,fd) is singular
 Eigen::VectorXd solveFree(const SpMat& Kt, const std::vector<int>& fd, const Eigen::VectorXd& rhs, int NRit);
-// RunError (Failure::Singular) when x leaves a residual above 1e-3 of rhs: a zero pivot
-void checkSolved(const SpMat& Kff, const Eigen::VectorXd& x, const Eigen::VectorXd& rhs);
+// RunError (Failure::Singular) when the residual Kff x - rhs is above 1e-3 of rhs: a zero pivot
+void checkSolved(const Eigen::VectorXd& residual, const Eigen::VectorXd& rhs);
 using FreeSolve = std::function<Eigen::VectorXd(const SpMat& Kt, const std::vector<int>& fd,
                                                 const Eigen::VectorXd& rhs, int NRit)>;  // solveFree, or another
 

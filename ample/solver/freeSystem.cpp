@@ -36,6 +36,7 @@ void buildFreeSystem(const SpMat& Kt, const std::vector<int>& fd, FreeSystem& S)
   checkSolverBuilt(S.choice);
   extractFreeSystem(Kt, fd, S);
   S.luAnalysed = false;                                 // LU (or a fallback) analyses it when needed
+  S.mirror.clear();                                     // found at the first symmetry check
   switch (S.choice) {                                   // symbolic analysis, once per pattern
     case LinearSolver::LU: break;
     case LinearSolver::LDLT: S.ldlt.analyzePattern(S.Kff); break;

@@ -57,6 +57,7 @@ struct FreeSystem {
   std::vector<int> fd;                         // free dofs it was built for
   int ktRows = 0;                              // rows of the Kt it was built for
   std::vector<int> fromKt;                     // Kff value e is Kt value fromKt[e]
+  std::vector<int> mirror;                     // Kff value e's transposed entry, or -1 (chosenSolve's)
   SpMat Kff;                                   // Kt(fd,fd)
   Eigen::SparseLU<SpMat, Eigen::COLAMDOrdering<int>> lu;  // LU, and LDLT's fallback
   bool luAnalysed = false;                     // lu's analysis is of this pattern
