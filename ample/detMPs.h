@@ -17,16 +17,12 @@
 
 namespace ample {
 
-struct ThreadShares;           // detMPsFast's (fast/detMPsFast.cpp)
+struct PointLoopPlan;          // detMPsFast's (fast/detMPsFast.h)
 
 struct DetMPsOut {
   Eigen::VectorXd fint;          // nodal internal forces
   SpMat Kt;                      // global tangent stiffness
-  // kept for the load step by detMPsFast (fast/detMPsFast.h); detMPs leaves them alone
-  std::vector<Matrix3d> bEn;     // exp(2 eps_e,n) of each point (eq 9; UL, PC)
-  bool blocked = false;          // Kt's pattern is node-blocked (addNodeBlocks)
-  long blockedNnz = -1;          // the pattern size that was checked
-  std::shared_ptr<ThreadShares> shares;  // its threads' points (fast/detMPsFast.cpp)
+  std::shared_ptr<PointLoopPlan> plan;  // kept for the load step by detMPsFast; detMPs leaves it alone
 };
 
 using PointStiffness = Eigen::Matrix<double, nD * MAXN, nD * MAXN>;  // k_p, its 2 nn x 2 nn corner

@@ -14,12 +14,14 @@ namespace ample {
 
 namespace {
 
-// k_p into the values Kval of Kt's pattern (eq 30), the columns of nodes [n0, n1) only
-// (the serial loop: every node)
-void assembleNodes(const SpMat& pattern, bool blocked, const MaterialPoint& mp, const PointStiffness& ke,
-              double* Kval, int n0, int n1) {
+// k_p of point p into the values Kval of Kt's pattern (eq 30), the columns of nodes [n0, n1)
+// only (the serial loop: every node)
+void assembleNodes(const SpMat& pattern, const PointLoopPlan& plan, int p, const MaterialPoint& mp,
+                   const PointStiffness& ke, double* Kval, int n0, int n1) {
   const int ne = nD * mp.nn;
-  if (blocked) return addNodeBlocks(pattern, Kval, mp.nIN.data(), mp.nn, ke.topLeftCorner(ne, ne), n0, n1);
+  if (plan.blocked)
+    return addNodeBlocks(pattern, Kval, mp.nIN.data(), mp.nn, plan.at.data() + plan.from[p],
+                         ke.topLeftCorner(ne, ne), n0, n1);
   int d[nD * MAXN];                                             // the point's dofs, ascending
   for (int a = 0; a < mp.nn; ++a)
     for (int i = 0; i < nD; ++i) d[nD * a + i] = dof(mp.nIN[a], i);
@@ -59,6 +61,18 @@ struct ThreadShares {                                           // the threads' 
 };
 
 namespace {
+
+// where each point's 2 x 2 node blocks sit in a node-blocked Kt, once per pattern
+void findBlocks(const SpMat& Kt, const std::vector<MaterialPoint>& mpData, PointLoopPlan& plan) {
+  const int np = int(mpData.size());
+  plan.from.assign(np + 1, 0);
+  for (int p = 0; p < np; ++p) plan.from[p + 1] = plan.from[p] + long(mpData[p].nn) * mpData[p].nn;
+  plan.at.resize(plan.from[np]);
+  forPointShares(np, pointThreads(np), [&](int, int begin, int end) {  // each point its own
+    for (int p = begin; p < end; ++p)
+      nodeBlockPositions(Kt, mpData[p].nIN.data(), mpData[p].nn, plan.at.data() + plan.from[p]);
+  });
+}
 
 // the threads' node ranges and their points, once per load step (the points link the same
 // nodes, and a copy's inputs, Fn, eps_e,n, the basis, do not change within a step)
@@ -102,12 +116,13 @@ void shareOut(const std::vector<MaterialPoint>& mpData, int nodes, int nt, Threa
 void detMPsOnThreads(const Eigen::VectorXd& uvw, std::vector<MaterialPoint>& mpData, Formulation form,
                      int nt, DetMPsOut& out) {
   const int np = int(mpData.size());
-  if (!out.shares || out.shares->np != np || out.shares->nt != nt) {
-    out.shares = std::make_shared<ThreadShares>();
-    shareOut(mpData, int(uvw.size()) / nD, nt, *out.shares);
+  PointLoopPlan& plan = *out.plan;
+  if (!plan.threads || plan.threads->np != np || plan.threads->nt != nt) {
+    plan.threads = std::make_shared<ThreadShares>();
+    shareOut(mpData, int(uvw.size()) / nD, nt, *plan.threads);
   }
-  const std::vector<int>& cut = out.shares->cut;
-  std::vector<ThreadShares::Share>& share = out.shares->share;
+  const std::vector<int>& cut = plan.threads->cut;
+  std::vector<ThreadShares::Share>& share = plan.threads->share;
   static const Matrix3d none = Matrix3d::Identity();
   forPointShares(nt, nt, [&](int t, int, int) {                 // the points
     ThreadShares::Share& s = share[t];
@@ -121,12 +136,12 @@ void detMPsOnThreads(const Eigen::VectorXd& uvw, std::vector<MaterialPoint>& mpD
       MaterialPoint& mp = s.points[k] >= 0 ? mpData[p] : s.copies[c++];
       prefetchAhead(mpData, p, np);                             // memory only: the next points
       try {
-        addPoint(uvw, out.bEn.empty() ? none : out.bEn[p], form, mp, s.fint, ke);
+        addPoint(uvw, plan.bEn.empty() ? none : plan.bEn[p], form, mp, s.fint, ke);
       } catch (...) {
         s.failedAt = p, s.failed = std::current_exception();
         return;
       }
-      assembleNodes(out.Kt, out.blocked, mp, ke, out.Kt.valuePtr(), n0, n1);
+      assembleNodes(out.Kt, plan, p, mp, ke, out.Kt.valuePtr(), n0, n1);
     }
     const int r0 = dof(n0, 0), rows = dof(n1, 0) - r0;
     out.fint.segment(r0, rows) = s.fint.segment(r0, rows);
@@ -154,10 +169,14 @@ void detMPsFast(const Eigen::VectorXd& uvw, std::vector<MaterialPoint>& mpData, 
   const int nDoF = int(uvw.size()), np = int(mpData.size());
   if (np < fastFrom()) return detMPs(uvw, mpData, form, out);  // small: the core loop
   if (out.Kt.rows() != nDoF || out.Kt.nonZeros() == 0) out.Kt = stiffnessPattern(nDoF, mpData);
-  if (form != Formulation::SS && int(out.bEn.size()) != np) out.bEn = elasticLeftCGs(mpData);
-  if (out.blockedNnz != out.Kt.nonZeros()) {                    // a new pattern (or one grown by
-    out.blocked = nodeBlocked(out.Kt);                          // the ghost penalty / IB terms)
-    out.blockedNnz = out.Kt.nonZeros();
+  if (!out.plan) out.plan = std::make_shared<PointLoopPlan>();
+  PointLoopPlan& plan = *out.plan;
+  if (form != Formulation::SS && int(plan.bEn.size()) != np) plan.bEn = elasticLeftCGs(mpData);
+  if (plan.patternNnz != out.Kt.nonZeros()) {                   // a new pattern (or one grown by
+    plan.blocked = nodeBlocked(out.Kt);                         // the ghost penalty / IB terms)
+    plan.patternNnz = out.Kt.nonZeros();
+    plan.at.clear(), plan.from.clear();
+    if (plan.blocked) findBlocks(out.Kt, mpData, plan);
   }
   out.fint.setZero(nDoF);
   out.Kt.coeffs().setZero();
@@ -168,8 +187,8 @@ void detMPsFast(const Eigen::VectorXd& uvw, std::vector<MaterialPoint>& mpData, 
   for (int p = 0; p < np; ++p) {
     prefetchAhead(mpData, p, np);                               // memory only: the next points
     MaterialPoint& mp = mpData[p];
-    addPoint(uvw, out.bEn.empty() ? none : out.bEn[p], form, mp, out.fint, ke);
-    assembleNodes(out.Kt, out.blocked, mp, ke, out.Kt.valuePtr(), 0, nDoF / nD);
+    addPoint(uvw, plan.bEn.empty() ? none : plan.bEn[p], form, mp, out.fint, ke);
+    assembleNodes(out.Kt, plan, p, mp, ke, out.Kt.valuePtr(), 0, nDoF / nD);
   }
 }
 

@@ -27,16 +27,17 @@ SpMat stiffnessPattern(int nDoF, const std::vector<MaterialPoint>& mpData) {
     std::sort(rows.begin() + rowStart[n], rows.end());
     rowStart[n + 1] = int(rows.size());
   }
-  Eigen::VectorXi perColumn(nDoF);
-  for (int n = 0; n < nodes; ++n)
-    for (int k = 0; k < nD; ++k) perColumn(dof(n, k)) = nD * (rowStart[n + 1] - rowStart[n]);
-  SpMat K(nDoF, nDoF);
-  K.reserve(perColumn);
-  for (int n = 0; n < nodes; ++n)
-    for (int k = 0; k < nD; ++k)
+  SpMat K(nDoF, nDoF);                                                // compressed, written
+  K.resizeNonZeros(nD * nD * rowStart[nodes]);                       // directly: column dof(n, k)
+  int *outer = K.outerIndexPtr(), *inner = K.innerIndexPtr(), k = 0;  // has the rows dof(r, i) of
+  for (int n = 0; n < nodes; ++n)                                    // node n's row nodes r
+    for (int c = 0; c < nD; ++c) {
+      outer[dof(n, c)] = k;
       for (int e = rowStart[n]; e < rowStart[n + 1]; ++e)
-        for (int i = 0; i < nD; ++i) K.insert(dof(rows[e], i), dof(n, k)) = 0.0;
-  K.makeCompressed();
+        for (int i = 0; i < nD; ++i) inner[k++] = dof(rows[e], i);
+    }
+  outer[nDoF] = k;
+  K.coeffs().setZero();
   return K;
 }
 
@@ -76,17 +77,28 @@ bool nodeBlocked(const SpMat& Kt) {
 // a node-blocked pattern: one search per node column b, then a walk by node
 // pairs; the 2 x 2 block of nodes (a, b) sits at pos, pos + 1 (column x of b)
 // and pos + len, pos + len + 1 (column y of b)
-void addNodeBlocks(const SpMat& Kt, double* val, const int* nIN, int nn,
-                   const Eigen::Ref<const Eigen::MatrixXd>& ke, int n0, int n1) {
+void nodeBlockPositions(const SpMat& Kt, const int* nIN, int nn, int* at) {
   static_assert(nD == 2, "the 2 x 2 node blocks");
   const int* outer = Kt.outerIndexPtr();
   const int* inner = Kt.innerIndexPtr();
   for (int b = 0; b < nn; ++b) {
-    if (nIN[b] < n0 || nIN[b] >= n1) continue;
-    const int cx = dof(nIN[b], 0), len = outer[cx + 1] - outer[cx];
+    const int cx = dof(nIN[b], 0);
     int pos = int(std::lower_bound(inner + outer[cx], inner + outer[cx + 1], dof(nIN[0], 0)) - inner);
     for (int a = 0; a < nn; ++a) {
       while (inner[pos] < dof(nIN[a], 0)) pos += nD;
+      at[nn * b + a] = pos;
+    }
+  }
+}
+
+void addNodeBlocks(const SpMat& Kt, double* val, const int* nIN, int nn, const int* at,
+                   const Eigen::Ref<const Eigen::MatrixXd>& ke, int n0, int n1) {
+  const int* outer = Kt.outerIndexPtr();
+  for (int b = 0; b < nn; ++b) {
+    if (nIN[b] < n0 || nIN[b] >= n1) continue;
+    const int cx = dof(nIN[b], 0), len = outer[cx + 1] - outer[cx];
+    for (int a = 0; a < nn; ++a) {
+      const int pos = at[nn * b + a];
       val[pos] += ke(2 * a, 2 * b);
       val[pos + 1] += ke(2 * a + 1, 2 * b);
       val[pos + len] += ke(2 * a, 2 * b + 1);
