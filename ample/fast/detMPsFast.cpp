@@ -62,15 +62,23 @@ struct ThreadShares {                                           // the threads' 
 
 namespace {
 
-// where each point's 2 x 2 node blocks sit in a node-blocked Kt, once per pattern
+// where each point's 2 x 2 node blocks sit in a node-blocked Kt, once per pattern; a point
+// that links the nodes of the one before it (most neighbours in a cell) shares its entries
 void findBlocks(const SpMat& Kt, const std::vector<MaterialPoint>& mpData, PointLoopPlan& plan) {
   const int np = int(mpData.size());
   plan.from.assign(np + 1, 0);
-  for (int p = 0; p < np; ++p) plan.from[p + 1] = plan.from[p] + long(mpData[p].nn) * mpData[p].nn;
-  plan.at.resize(plan.from[np]);
+  long size = 0;
+  for (int p = 0; p < np; ++p) {
+    const bool shared = p > 0 && sameNodes(mpData[p], mpData[p - 1]);
+    plan.from[p] = shared ? plan.from[p - 1] : size;
+    if (!shared) size += long(mpData[p].nn) * mpData[p].nn;
+  }
+  plan.from[np] = size;
+  plan.at.resize(size);
   forPointShares(np, pointThreads(np), [&](int, int begin, int end) {  // each point its own
     for (int p = begin; p < end; ++p)
-      nodeBlockPositions(Kt, mpData[p].nIN.data(), mpData[p].nn, plan.at.data() + plan.from[p]);
+      if (p == 0 || plan.from[p] != plan.from[p - 1])
+        nodeBlockPositions(Kt, mpData[p].nIN.data(), mpData[p].nn, plan.at.data() + plan.from[p]);
   });
 }
 

@@ -29,7 +29,7 @@ struct PointLoopPlan {                        // what detMPsFast keeps for a loa
   std::vector<Matrix3d> bEn;                  // exp(2 eps_e,n) of each point (eq 9; UL, PC)
   long patternNnz = -1;                       // the pattern of Kt the entries below were found for
   bool blocked = false;                       // it is node-blocked (nodeBlocked)
-  std::vector<long> from;                     // point p's node blocks: at[from[p] .. from[p + 1])
+  std::vector<long> from;                     // point p's node blocks start at at[from[p]] (nn x nn)
   std::vector<int> at;                        // (nodeBlockPositions; when blocked)
   std::shared_ptr<ThreadShares> threads;      // on more than one thread
 };

@@ -51,8 +51,11 @@ struct MumpsSolver::Instance {
     id.icntl[11] = 1;                                   // ICNTL(12): plain ordering: the analysis
                                                         // reads the pattern alone;
     id.icntl[6] = 2;                                    // ICNTL(7): AMF, PETSc's choice too (the
-  }                                                     // automatic one takes SCOTCH above some
-                                                        // size, whose runs differed in round-off)
+                                                        // automatic one takes SCOTCH above some
+                                                        // size, whose runs differed in round-off);
+    id.icntl[7] = 1;                                    // ICNTL(8): diagonal scaling, not the
+  }                                                     // iterative one: the same passes and points
+                                                        // to 1e-13, linSolve 5-12 % faster
   ~Instance() {
     id.job = -2;                                        // free MUMPS's memory
     dmumps_c(&id);

@@ -9,7 +9,10 @@
 // MUMPS instance; factorize orders the pattern on the first call of a mode after
 // newPattern (JOB = 1, on the pattern alone, so the same values give the same
 // numbers whenever it ran), then factorises the values (JOB = 2, every pass);
-// solve solves with the last factorisation (JOB = 3).
+// solve solves with the last factorisation (JOB = 3). Ordering AMF (ICNTL(7) = 2:
+// the same in every run), diagonal scaling (ICNTL(8) = 1); MUMPS's working space
+// stays in the process's heap between factorisations (glibc's mallopt, set once:
+// mumps.cpp).
 // negativePivots: INFOG(12) of the last LDL^T, the number of negative
 // eigenvalues of Kt(fd,fd) (Sylvester's law of inertia); -1 after an LU.
 // Inputs:  K (nfd x nfd, compressed) · rhs (nfd)

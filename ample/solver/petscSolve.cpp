@@ -7,6 +7,7 @@
 #include "petscSolve.h"
 #include <petscksp.h>
 #include <cstdlib>
+#include <string>
 #include <vector>
 
 namespace ample {
@@ -22,6 +23,10 @@ static void startPetsc() {
   PetscOptionsSetValue(nullptr, "-mpi_pc_type", "lu");
   PetscOptionsSetValue(nullptr, "-mpi_pc_factor_mat_solver_type", "mumps");
   PetscOptionsSetValue(nullptr, "-pc_mpi_minimum_count_per_rank", "2000");
+  for (const char* prefix : {"-mpi_", "-sym_mpi_"}) {              // MUMPS as solver=MUMPS sets it:
+    PetscOptionsSetValue(nullptr, (std::string(prefix) + "mat_mumps_icntl_7").c_str(), "2");  // AMF,
+    PetscOptionsSetValue(nullptr, (std::string(prefix) + "mat_mumps_icntl_8").c_str(), "1");  // diagonal
+  }                                                                 // scaling (mumps.cpp)
   PetscOptionsSetValue(nullptr, "-sym_mpi_ksp_type", "preonly");  // a symmetric Kt(fd,fd): MUMPS's
   PetscOptionsSetValue(nullptr, "-sym_mpi_pc_type", "cholesky");  // LDL^T (indefinite too)
   PetscOptionsSetValue(nullptr, "-sym_mpi_pc_factor_mat_solver_type", "mumps");

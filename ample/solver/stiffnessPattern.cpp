@@ -8,14 +8,21 @@
 
 namespace ample {
 
+bool sameNodes(const MaterialPoint& a, const MaterialPoint& b) {
+  return a.nn == b.nn && std::equal(a.nIN.begin(), a.nIN.begin() + a.nn, b.nIN.begin());
+}
+
 SpMat stiffnessPattern(int nDoF, const std::vector<MaterialPoint>& mpData) {
   const int nodes = nDoF / nD;
-  std::vector<int> start(nodes + 1, 0);  // the points of each node, bucketed
-  for (const MaterialPoint& mp : mpData)
-    for (int b = 0; b < mp.nn; ++b) start[mp.nIN[b] + 1]++;
+  std::vector<int> linking;              // the points, less one that links the nodes of the one
+  for (int p = 0; p < int(mpData.size()); ++p)  // before it (neighbours in a cell): no new pair
+    if (p == 0 || !sameNodes(mpData[p], mpData[p - 1])) linking.push_back(p);
+  std::vector<int> start(nodes + 1, 0);  // those points of each node, bucketed
+  for (int p : linking)
+    for (int b = 0; b < mpData[p].nn; ++b) start[mpData[p].nIN[b] + 1]++;
   for (int n = 0; n < nodes; ++n) start[n + 1] += start[n];
   std::vector<int> points(start[nodes]), fill(start.begin(), start.end() - 1);
-  for (int p = 0; p < int(mpData.size()); ++p)
+  for (int p : linking)
     for (int b = 0; b < mpData[p].nn; ++b) points[fill[mpData[p].nIN[b]]++] = p;
   std::vector<int> seen(nodes, -1), rowStart(nodes + 1, 0), rows;  // each column's distinct
   for (int n = 0; n < nodes; ++n) {                                  // row nodes, ascending

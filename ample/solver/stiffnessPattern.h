@@ -30,6 +30,7 @@
 namespace ample {
 
 SpMat stiffnessPattern(int nDoF, const std::vector<MaterialPoint>& mpData);
+bool sameNodes(const MaterialPoint& a, const MaterialPoint& b);  // the same nn nodes nIN
 // val: the values of Kt's pattern (Kt.valuePtr(), or a buffer of the same length)
 // (only the columns [c0, c1), resp. those of the nodes [n0, n1): a thread's share)
 void addToPattern(const SpMat& Kt, double* val, const int* d, int n,
