@@ -43,13 +43,6 @@ static bool symmetric(FreeSystem& S) {
   return unequal == 0;
 }
 
-double infNorm(const SpMat& K) {                        // largest row sum of |K|
-  Eigen::VectorXd rowSum = Eigen::VectorXd::Zero(K.rows());
-  for (int k = 0; k < K.outerSize(); ++k)
-    for (SpMat::InnerIterator it(K, k); it; ++it) rowSum(it.row()) += std::abs(it.value());
-  return K.rows() ? rowSum.maxCoeff() : 0.0;
-}
-
 // the residual r = K x - b (K x summed column by column, as Eigen's K * x: the same bits)
 // and the backward error of x, ||r|| / (||K|| ||x|| + ||b||), in one pass over K
 static double residualAndBackwardError(const SpMat& K, const Eigen::VectorXd& x, const Eigen::VectorXd& b,

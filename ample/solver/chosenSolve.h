@@ -13,7 +13,7 @@
 // round-off gives ~1e-16 whatever the condition of K, an unstable
 // factorisation much more).
 // Inputs:  S · bc (nbc) · Kt (nDoF x nDoF) · oobf (nDoF) · NRit · fd (nfd)
-// Outputs: duvw (nDoF) · drct (nDoF) · S (its counters, notes) · infNorm, backwardError
+// Outputs: duvw (nDoF) · drct (nDoF) · S (its counters, notes) · backwardError
 // Tests:   tests/test_linSolve.cpp
 //--------------------------------------------------------------------------
 #pragma once
@@ -29,7 +29,6 @@ LinSolveOut chosenSolve(FreeSystem& S, const std::vector<BC>& bc, const SpMat& K
 Eigen::VectorXd chosenSolveFree(FreeSystem& S, const SpMat& Kt, const std::vector<int>& fd, const Eigen::VectorXd& rhs,
                                 int NRit);
 
-double infNorm(const SpMat& K);  // ||K||_inf, the largest row sum of |K|
 // the normwise backward error of x for K x = b: ||K x - b||_inf / (||K||_inf ||x||_inf + ||b||_inf)
 double backwardError(const SpMat& K, const Eigen::VectorXd& x, const Eigen::VectorXd& b);
 
