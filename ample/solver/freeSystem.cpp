@@ -8,19 +8,6 @@
 
 namespace ample {
 
-// Kt's index arrays are those it had when S last checked or built: the pattern unchanged
-// (within a load step always), two sequential comparisons instead of the walk below
-static bool sameIndices(const SpMat& Kt, const FreeSystem& S) {
-  return S.ktOuter.size() == size_t(Kt.outerSize()) + 1 && S.ktInner.size() == size_t(Kt.nonZeros()) &&
-         std::equal(S.ktOuter.begin(), S.ktOuter.end(), Kt.outerIndexPtr()) &&
-         std::equal(S.ktInner.begin(), S.ktInner.end(), Kt.innerIndexPtr());
-}
-
-static void keepIndices(const SpMat& Kt, FreeSystem& S) {
-  S.ktOuter.assign(Kt.outerIndexPtr(), Kt.outerIndexPtr() + Kt.outerSize() + 1);
-  S.ktInner.assign(Kt.innerIndexPtr(), Kt.innerIndexPtr() + Kt.nonZeros());
-}
-
 void extractFreeSystem(const SpMat& Kt, const std::vector<int>& fd, FreeSystem& S) {
   eigen_assert(Kt.isCompressed() && std::is_sorted(fd.begin(), fd.end()));  // (freeSystem.h)
   const int nfd = int(fd.size());
@@ -63,17 +50,14 @@ void buildFreeSystem(const SpMat& Kt, const std::vector<int>& fd, FreeSystem& S)
   }
   S.fd = fd;
   S.ktRows = int(Kt.rows());
-  keepIndices(Kt, S);
   S.builds++;
 }
 
 // Kt has the pattern S was built for (the same step, or a step whose points link the same
 // nodes): the same free dofs, and Kt's entries in free rows and columns sit where fromKt
-// says and land where Kff has them (walked as extractFreeSystem does, where Kt's index
-// arrays changed; if only outside Kt(fd,fd), the new ones are kept for the passes to come)
-static bool samePattern(const SpMat& Kt, const std::vector<int>& fd, FreeSystem& S) {
+// says and land where Kff has them (walked as extractFreeSystem does; no copy of Kt kept)
+static bool samePattern(const SpMat& Kt, const std::vector<int>& fd, const FreeSystem& S) {
   if (S.fd != fd || S.Kff.rows() != int(fd.size()) || S.ktRows != Kt.rows()) return false;
-  if (sameIndices(Kt, S)) return true;
   const int *outer = Kt.outerIndexPtr(), *inner = Kt.innerIndexPtr();
   const int *kffOuter = S.Kff.outerIndexPtr(), *kffInner = S.Kff.innerIndexPtr();
   std::vector<char> isFree(Kt.rows(), 0);
@@ -87,9 +71,7 @@ static bool samePattern(const SpMat& Kt, const std::vector<int>& fd, FreeSystem&
         ++k;
       }
   }
-  if (k != S.Kff.nonZeros()) return false;
-  keepIndices(Kt, S);
-  return true;
+  return k == S.Kff.nonZeros();
 }
 
 void refillFreeSystem(const SpMat& Kt, const std::vector<int>& fd, FreeSystem& S) {

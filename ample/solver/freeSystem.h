@@ -12,9 +12,7 @@
 // The main loop keeps one FreeSystem for the whole run: a load step whose fd
 // and Kt(fd,fd) pattern (Kt's free entries compared with fromKt entry by
 // entry, O(nnz)) are those of the step before (no point entered or left a
-// cell) keeps the analysis too. Kt's index arrays are kept as well, so a pass
-// whose Kt has the same ones (every pass after a step's first) is recognised
-// by comparing them, without that walk.
+// cell) keeps the analysis too.
 // choice (setup parameter solver=, docs/solvers.md):
 //   LU          Eigen's SparseLU, COLAMD ordering (the default; measured
 //               against AMD and METIS in docs/scaling.md: the least fill)
@@ -58,7 +56,6 @@ struct FreeSystem {
   LinearSolver choice = LinearSolver::LU;      // solver= (above)
   std::vector<int> fd;                         // free dofs it was built for
   int ktRows = 0;                              // rows of the Kt it was built for
-  std::vector<int> ktOuter, ktInner;           // Kt's pattern when last built or checked
   std::vector<int> fromKt;                     // Kff value e is Kt value fromKt[e]
   std::vector<int> mirror;                     // Kff value e's transposed entry, or -1 (chosenSolve's)
   SpMat Kff;                                   // Kt(fd,fd)
