@@ -14,8 +14,8 @@
 # the column where it lies.
 # Usage:   tools/solvers_published.sh BUILD_DIR OUT.csv SOLVER [SOLVER ...]
 #   e.g.   tools/solvers_published.sh build/fast docs/results/solvers_published.csv MUMPS LU
-# Takes about 20 minutes a solver on one core (the deep beam with 40 x 40
-# points per cell and the collapse at h = 0.25 m the longest).
+# With MUMPS and LU it took 17 minutes on one core (2026-12-05; the deep beam
+# with 40 x 40 points per cell and the collapse at h = 0.25 m the longest).
 #--------------------------------------------------------------------------
 set -uo pipefail
 [ $# -ge 3 ] || { echo "usage: tools/solvers_published.sh BUILD_DIR OUT.csv SOLVER [SOLVER ...]" >&2; exit 2; }

@@ -67,17 +67,18 @@ namespace {
 void findBlocks(const SpMat& Kt, const std::vector<MaterialPoint>& mpData, PointLoopPlan& plan) {
   const int np = int(mpData.size());
   plan.from.assign(np + 1, 0);
+  std::vector<char> shared(np, 0);                              // links the nodes of point p - 1
   long size = 0;
   for (int p = 0; p < np; ++p) {
-    const bool shared = p > 0 && sameNodes(mpData[p], mpData[p - 1]);
-    plan.from[p] = shared ? plan.from[p - 1] : size;
-    if (!shared) size += long(mpData[p].nn) * mpData[p].nn;
+    shared[p] = p > 0 && sameNodes(mpData[p], mpData[p - 1]);
+    plan.from[p] = shared[p] ? plan.from[p - 1] : size;
+    if (!shared[p]) size += long(mpData[p].nn) * mpData[p].nn;
   }
   plan.from[np] = size;
   plan.at.resize(size);
   forPointShares(np, pointThreads(np), [&](int, int begin, int end) {  // each point its own
     for (int p = begin; p < end; ++p)
-      if (p == 0 || plan.from[p] != plan.from[p - 1])
+      if (!shared[p])
         nodeBlockPositions(Kt, mpData[p].nIN.data(), mpData[p].nn, plan.at.data() + plan.from[p]);
   });
 }
