@@ -43,6 +43,7 @@ struct Analysis {
   int loneFrom = 0;                   // first load step the lone-node rule was needed (0: not yet)
   Formulation formulation = Formulation::UL;        // frame of equilibrium ([Lagrangian])
   DomainUpdate domainUpdate = DomainUpdate::Uii;    // GIMP domain update ([AMPLE] eq 34)
+  Locking locking = Locking::None;                  // anti-locking (ample/locking/): none, F-bar
   bool fem = false;                   // finite element mode: the mesh moves with the nodes (moveMesh)
   bool gridMoves = false;             // the setup rebuilds the grid between steps (beforeStep;
                                       // stretch, doughnut): postPro writes mesh_<lstp>.vtk

@@ -40,6 +40,7 @@ enum class MpType { MPM = 1, GIMP = 2, CPDI1 = 3, CPDI2 = 4 };  // [AMPLE]: mpTy
 enum class CmType { Elastic = 1, VonMises = 2 };                 // [AMPLE]: cmType
 enum class Formulation { UL = 1, PC = 2, SS = 3 };  // updated / previously converged Lagrangian
                                                     // ([Lagrangian]), small strain ([Boundaries] sec 2)
+enum class Locking { None = 0, Fbar = 1 };          // volumetric locking remedy (ample/locking/)
 enum class LinearSolver {                   // the sparse solve of Kt(fd,fd) (freeSystem.h)
   LU = 0, LDLT = 1, MUMPS = 2, PETSC = 3
 };  // SparseLU (the default) · SimplicialLDLT if symmetric, else SparseLU · MUMPS LDL^T if

@@ -30,6 +30,7 @@ Analysis baseAnalysis(const Params& P) {
   an.lone = int(get(P, "lone"));
   an.formulation = Formulation(int(get(P, "formulation")));
   an.domainUpdate = DomainUpdate(int(get(P, "domainUpdate")));
+  an.locking = Locking(int(get(P, "locking")));
   return an;
 }
 

@@ -121,6 +121,10 @@ Params commonParams(int lstps) {
       Param("formulation", 1).choice(1, {"UL", "PC", "SS"})
           .help("equilibrium frame: updated or previously converged Lagrangian ([Lagrangian]), or "
                 "small strain with linear kinematics ([Boundaries] sec 2)"),
+      Param("locking", 0).choice(0, {"none", "Fbar"})
+          .help("anti-locking (docs/locking.md): none = the papers' point loop; Fbar = each point's J "
+                "replaced by the volume average over the points of its cell (F-bar for UL and PC, its "
+                "small-strain B-bar for SS), for nearly incompressible or von Mises (undrained) soil"),
       Param("domainUpdate", 3).choice(0, {"none", "detF", "Fii", "Uii", "corner", "FiiVol", "FiiVolInc"})
           .help("GIMP domain update ([Lagrangian] eqs 32-39)"),
       Param("E", 1.0).above(0).help("Young's modulus (Pa)"),
