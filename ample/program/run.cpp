@@ -12,7 +12,8 @@
 //                (the default) from the first step that fails without it
 //   solveFree    linSolve's Kt(fd,fd) \ rhs by the solver= choice with its analysis kept
 //                (solver/chosenSolve.h), also for SparseLU on large runs
-//   detMPs       detMPsFast for large runs (opt.pointLoop), timed
+//   detMPs       detMPsFast for large runs (opt.pointLoop), or detMPsFbar (locking=Fbar;
+//                ample/locking/), timed
 //   passTerms    the ghost penalty's and the boundaries' Kt, fint and reactions
 //   afterPass    progress, residuals.csv; a NaN or Inf stops the step
 //   checkConverged  why a step failed (round-off floor, still falling:
@@ -31,6 +32,7 @@
 #include "ample/domains/updateDomain.h"
 #include "ample/errors.h"
 #include "ample/fast/fastFrom.h"
+#include "ample/locking/detMPsFbar.h"
 #include "ample/meshes/cellSearch.h"
 #include "ample/remedies/ghostPenalty.h"
 #include "ample/remedies/loadSteps.h"
@@ -161,8 +163,12 @@ static Hooks runHooks(Analysis& an, RunLog& log, const RunOptions& opt, RunState
       x.Kff.builds++, x.Kff.factorisations++;                        // SparseLU analyses every pass
       return timed(T.linSolve, solveFree, Kt, fd, rhs, NRit);
     };
-  h.detMPs = [&T, pointLoop](const Eigen::VectorXd& uvw, std::vector<MaterialPoint>& mpData, Formulation form,
-                             DetMPsOut& mps) { timed(T.detMPs, pointLoop, uvw, mpData, form, mps); };
+  if (an.locking == Locking::Fbar)                                   // anti-locking: F-bar / B-bar
+    h.detMPs = [&T, &an](const Eigen::VectorXd& uvw, std::vector<MaterialPoint>& mpData, Formulation form,
+                         DetMPsOut& mps) { timed(T.detMPs, detMPsFbar, an.mesh, uvw, mpData, form, mps); };
+  else
+    h.detMPs = [&T, pointLoop](const Eigen::VectorXd& uvw, std::vector<MaterialPoint>& mpData, Formulation form,
+                               DetMPsOut& mps) { timed(T.detMPs, pointLoop, uvw, mpData, form, mps); };
   if (an.ghost > 0 || !an.boundaries.empty())
     h.passTerms = [&x](const Eigen::VectorXd& uvw, DetMPsOut& mps, Eigen::VectorXd& fbnd) {
       addGhostPenalty(x.Kgp, uvw, mps.Kt, mps.fint);                 // remedy (off: nothing)
@@ -250,6 +256,8 @@ static void checkAnalysis(const Analysis& an) {
       if (mp.mpType != MpType::MPM)
         throw InputError("the finite element mode (fem=1) takes standard points (mpType=1 MPM) "
                          "as its integration points");
+  if (an.locking == Locking::Fbar && !fbarRefusal(an.mesh, an.fem).empty())
+    throw InputError(fbarRefusal(an.mesh, an.fem));
   if (!an.mesh.regular()) return checkGeneralMesh(an);
   const Vector2d lo = an.mesh.origin,
                  hi = lo + Vector2d(an.mesh.nelsx * an.mesh.h(0), an.mesh.nelsy * an.mesh.h(1));
