@@ -34,7 +34,8 @@ struct PointTerms {         // one point's share of fint and Kt
 // each cell's points and the union of their nodes (a point's cell: cellHolding)
 struct Patches {
   std::vector<int> cell;                   // the cell of each point
-  std::vector<std::array<int, MAXN>> slot; // slot[p][v]: point p's node v in nodes
+  std::vector<int> start, points;          // cell c's points: points[start[c] .. start[c+1])
+  std::vector<std::array<int, MAXN>> slot; // slot[p][v]: point p's node v in its cell's node list
   std::vector<int> nodeStart, nodes;       // cell c's nodes: nodes[nodeStart[c] .. nodeStart[c+1])
 };
 
@@ -104,20 +105,21 @@ Patches patchesOf(const Mesh& mesh, const std::vector<MaterialPoint>& mpData) {
   Patches P;
   P.cell.resize(np);
   P.slot.resize(np);
-  std::vector<int> start(nels + 1, 0), order(np);
-  for (int p = 0; p < np; ++p) start[(P.cell[p] = cellHolding(mesh, mpData[p].mpC)) + 1]++;
-  for (int c = 0; c < nels; ++c) start[c + 1] += start[c];
-  std::vector<int> next(start.begin(), start.end() - 1);
-  for (int p = 0; p < np; ++p) order[next[P.cell[p]]++] = p;   // the points, cell by cell
+  P.points.resize(np);
+  P.start.assign(nels + 1, 0);
+  for (int p = 0; p < np; ++p) P.start[(P.cell[p] = cellHolding(mesh, mpData[p].mpC)) + 1]++;
+  for (int c = 0; c < nels; ++c) P.start[c + 1] += P.start[c];
+  std::vector<int> next(P.start.begin(), P.start.end() - 1);
+  for (int p = 0; p < np; ++p) P.points[next[P.cell[p]]++] = p;  // cell by cell, in point order
   P.nodeStart.assign(nels + 1, 0);
   for (int c = 0; c < nels; ++c) {
-    for (int q = start[c]; q < start[c + 1]; ++q) {
-      const MaterialPoint& mp = mpData[order[q]];
+    for (int q = P.start[c]; q < P.start[c + 1]; ++q) {
+      const MaterialPoint& mp = mpData[P.points[q]];
       for (int v = 0; v < mp.nn; ++v) {
         int s = P.nodeStart[c];
         while (s < int(P.nodes.size()) && P.nodes[s] != mp.nIN[v]) ++s;
         if (s == int(P.nodes.size())) P.nodes.push_back(mp.nIN[v]);
-        P.slot[order[q]][v] = s;
+        P.slot[P.points[q]][v] = s - P.nodeStart[c];
       }
     }
     P.nodeStart[c + 1] = int(P.nodes.size());
@@ -148,42 +150,48 @@ void detMPsFbar(const Mesh& mesh, const Eigen::VectorXd& uvw, std::vector<Materi
   const int np = int(mpData.size()), nels = mesh.nels();
   const Patches P = patchesOf(mesh, mpData);
   std::vector<Matrix2d> G(np);                                  // dF (UL, PC) or grad du (SS)
-  std::vector<double> num(nels, 0.0), den(nels, 0.0);           // sum dJ v^n, sum v^n (SS: theta V, V)
+  std::vector<double> bar(nels, 0.0), den(nels, 0.0);           // sum dJ v^n / sum v^n (SS: theta)
   for (int p = 0; p < np; ++p) {
     G[p] = gradDu(uvw, mpData[p]);
     if (!SS) G[p] += Matrix2d::Identity();
-    num[P.cell[p]] += (SS ? G[p].trace() : G[p].determinant()) * mpData[p].vp;
+    bar[P.cell[p]] += (SS ? G[p].trace() : G[p].determinant()) * mpData[p].vp;
     den[P.cell[p]] += mpData[p].vp;
   }
   out.fint.setZero(uvw.size());
   std::vector<Eigen::Triplet<double>> Kt;
-  std::vector<double> R(nD * P.nodes.size(), 0.0), W(R.size(), 0.0), V(nels, 0.0);
+  std::vector<double> Kc, R, W;                                 // a cell's stiffness, R and W
   PointStiffness ke;
   Eigen::Matrix<double, 4, Eigen::Dynamic, 0, 4, nD * MAXN> AB;
-  for (int p = 0; p < np; ++p) {                                // the point loop
-    MaterialPoint& mp = mpData[p];
-    const int c = P.cell[p], n2 = nD * mp.nn;
-    const PointTerms t = SS ? bbarPoint(G[p], num[c] / den[c], mp) : fbarPoint(G[p], num[c] / den[c], mp);
-    const auto B = t.B.leftCols(n2);
-    const PointVector f = t.Vp * B.transpose() * t.S;            // eq 16
-    const PointVector r = t.Vp * B.transpose() * t.Q;            // B' Q v
-    AB = t.A * B;
-    ke.topLeftCorner(n2, n2).noalias() = t.Vp * B.transpose().lazyProduct(AB);           // eq 14
-    assemble(mp, ke, Kt);                                                                // eq 30
-    for (int v = 0; v < mp.nn; ++v)
-      for (int i = 0; i < nD; ++i) {
-        out.fint(dof(mp.nIN[v], i)) += f(nD * v + i);
-        R[nD * P.slot[p][v] + i] += r(nD * v + i);
-        W[nD * P.slot[p][v] + i] += t.Vp * t.B(3 * i, nD * v + i);  // v dS_v/dx_i
+  for (int c = 0; c < nels; ++c) {                              // the cells, each point of each
+    const int n2 = nD * (P.nodeStart[c + 1] - P.nodeStart[c]);  // the cell's dofs
+    if (n2 == 0) continue;
+    Kc.assign(size_t(n2) * n2, 0.0), R.assign(n2, 0.0), W.assign(n2, 0.0);
+    double V = 0.0;
+    for (int q = P.start[c]; q < P.start[c + 1]; ++q) {         // the point loop
+      const int p = P.points[q];
+      MaterialPoint& mp = mpData[p];
+      const PointTerms t = SS ? bbarPoint(G[p], bar[c] / den[c], mp) : fbarPoint(G[p], bar[c] / den[c], mp);
+      const int m2 = nD * mp.nn;
+      const auto B = t.B.leftCols(m2);
+      const PointVector f = t.Vp * B.transpose() * t.S;                                   // eq 16
+      const PointVector r = t.Vp * B.transpose() * t.Q;                                   // B' Q v
+      AB = t.A * B;
+      ke.topLeftCorner(m2, m2).noalias() = t.Vp * B.transpose().lazyProduct(AB);          // eq 14
+      for (int a = 0; a < m2; ++a) {                            // into the cell's K, R, W (eq 30)
+        const int ra = nD * P.slot[p][a / nD] + a % nD;
+        out.fint(dof(mp.nIN[a / nD], a % nD)) += f(a);
+        R[ra] += r(a);
+        W[ra] += t.Vp * t.B(3 * (a % nD), a);                   // v dS_v/dx_i
+        for (int b = 0; b < m2; ++b) Kc[size_t(nD * P.slot[p][b / nD] + b % nD) * n2 + ra] += ke(a, b);
       }
-    V[c] += t.Vp;
+      V += t.Vp;
+    }
+    const int* nodes = &P.nodes[P.nodeStart[c]];
+    for (int b = 0; b < n2; ++b)                                // + R (x) W / V, then into Kt
+      for (int a = 0; a < n2; ++a)
+        Kt.emplace_back(dof(nodes[a / nD], a % nD), dof(nodes[b / nD], b % nD),
+                        Kc[size_t(b) * n2 + a] + R[a] * W[b] / V);
   }
-  for (int c = 0; c < nels; ++c)                                // the cells' coupling, R (x) W / V
-    for (int a = P.nodeStart[c]; a < P.nodeStart[c + 1]; ++a)
-      for (int b = P.nodeStart[c]; b < P.nodeStart[c + 1]; ++b)
-        for (int i = 0; i < nD; ++i)
-          for (int k = 0; k < nD; ++k)
-            Kt.emplace_back(dof(P.nodes[a], i), dof(P.nodes[b], k), R[nD * a + i] * W[nD * b + k] / V[c]);
   out.Kt.resize(uvw.size(), uvw.size());
   out.Kt.setFromTriplets(Kt.begin(), Kt.end());
 }

@@ -87,7 +87,14 @@ std::string whatToTry(const RunError& e, const Analysis& an, int lstpsMax) {
                           : "; try split=0.5 (a GIMP point with lp > h/2 is cut in two after each load step)";
     case Failure::NotConverged:
     case Failure::Stalled:
-    case Failure::NotFinite: return splitAdvice(an) + smallerSteps(an, lstpsMax);
+    case Failure::NotFinite:
+      if (an.locking == Locking::Fbar && an.ghost == 0 && splitAdvice(an).empty())
+      {
+        const std::string steps = smallerSteps(an, lstpsMax);    // "; try ..." or ""
+        return "; try ghost=0.01 (with locking=Fbar a node that only the edge of a point's domain reaches "
+               "keeps little stiffness: the ghost penalty pins it)" + (steps.empty() ? "" : "; or" + steps.substr(5));
+      }
+      return splitAdvice(an) + smallerSteps(an, lstpsMax);
     case Failure::Singular: {  // a nearly empty cell, or a load step so large that cells empty
       const std::string halves = an.substeps >= 30 ? std::string("more points per cell (mp)")
           : "substeps=" + std::to_string(an.substeps ? std::min(30, 2 * an.substeps) : 4) +
