@@ -44,6 +44,8 @@ struct Analysis {
   Formulation formulation = Formulation::UL;        // frame of equilibrium ([Lagrangian])
   DomainUpdate domainUpdate = DomainUpdate::Uii;    // GIMP domain update ([AMPLE] eq 34)
   Locking locking = Locking::None;                  // anti-locking (ample/locking/): none, F-bar
+  bool geostatic = false;             // start from the K0 stress of the weight, the weight in full
+  double K0 = 1;                      //   from step 1 (ample/initial/geostatic.h); sigma_h / sigma_v
   bool fem = false;                   // finite element mode: the mesh moves with the nodes (moveMesh)
   bool gridMoves = false;             // the setup rebuilds the grid between steps (beforeStep;
                                       // stretch, doughnut): postPro writes mesh_<lstp>.vtk
@@ -52,8 +54,12 @@ struct Analysis {
   Eigen::VectorXd uvw;                              // its converged displacement increment
   std::vector<Vector2d> ibForce;                    // force of each implicit boundary on the body
   // optional work of a setup at the start / end of each load step (nullptr: none),
-  // e.g. a grid that follows the body, boundary cells that change, a reaction history
-  std::function<void(Analysis& an, int lstp)> beforeStep, afterStep;
+  // e.g. a grid that follows the body, boundary cells that change, a reaction history;
+  // afterStep also gets the load factor lf reached at the step's end (Increment::lf1 of the
+  // step, lstp / lstps; the halves of the substeps= remedy end there too): a load or a
+  // prescribed displacement given as a total is that total times lf
+  std::function<void(Analysis& an, int lstp)> beforeStep;
+  std::function<void(Analysis& an, int lstp, double lf)> afterStep;
   std::vector<int> tagged;                          // points a setup marks for its hooks
   std::vector<std::vector<std::pair<std::string, double>>> history;  // rows for history.csv
 };

@@ -1,7 +1,8 @@
 #!/usr/bin/env python3
 """plot_run.py — a picture of one run of ample, from its output folder alone.
 
-Left:        the points of the last converged step (mp_final.csv), each its domain
+Left:        the points of the last converged step (mp_final.csv), or of load step N
+             (--step N: mpData_N.vtk), each its domain
              (GIMP: 2 lp x 2 lp; otherwise a square of area V), coloured by FIELD
              (default vonMises), over the background grid (mesh_<last>.vtk, or
              mesh.vtk: a grid that does not move is written once, see ample's
@@ -9,10 +10,13 @@ Left:        the points of the last converged step (mp_final.csv), each its doma
 Right, top:  the convergence history (residuals.csv): fErr against the Newton-Raphson
              pass, one line per load step (colour = load step), log scale, the tolerance dashed.
 Right, low:  the setup's history.csv if it writes one (e.g. load against displacement);
-             the columns drawn are chosen in HISTORY below or by --history.
+             the columns drawn are chosen in HISTORY below or by --history. Columns of
+             different units (UNITS below, docs/output.md) get their own y axes: the first
+             unit on the left axis, the second on a right axis; at most two units in the
+             panel (the columns of a third are left out, said on stderr).
 
 usage: plot_run.py OUTDIR [--field NAME] [--original] [--deformed-grid] [--out PNG]
-                   [--history X Y[,Y...]]
+                   [--history X Y[,Y...]] [--step N]
        plot_run.py --animate OUTDIR [--field NAME] [--out HTML]
   --field         one of: vonMises sxx syy szz sxy p ux uy u J  (default vonMises)
   --original      points at their original positions X0 (and the first grid written, mesh.vtk)
@@ -21,6 +25,9 @@ usage: plot_run.py OUTDIR [--field NAME] [--original] [--deformed-grid] [--out P
                   the grid moves (fem=1, stretch, doughnut) or the run had --vtk-grid every)
   --out           the PNG to write (default OUTDIR/run.png)
   --history       history.csv columns: X against Y (several: Y1,Y2)
+  --step          draw the points of load step N (mpData_N.vtk, written with --vtk) instead of
+                  the last converged step's; a step with no mpData_N.vtk is an error that names
+                  the steps there are
   --animate       instead of the PNG, one self-contained HTML page of every load step written
                   (mpData_<lstp>.vtk), with a slider and play/pause (animate_run.py, default
                   OUTDIR/run.html; needs no matplotlib)
@@ -52,8 +59,7 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt
 from matplotlib.collections import LineCollection, PolyCollection
 from matplotlib.ticker import MaxNLocator
-from plot_history import draw_history
-from run_output import FIELDS, point_field, read_csv, read_mesh, read_summary
+from run_output import FIELDS, point_field, read_csv, read_legacy_vtk, read_mesh, read_summary
 
 # history.csv columns to draw per setup, where "second column against the rest" reads badly
 HISTORY = {
@@ -65,6 +71,28 @@ HISTORY = {
     "ibcantilever": ("load_factor", ["tip_v", "tip_v_beam"]),
     "doughnut": ("alpha", ["fNorm"]),
 }
+
+# the unit of each history.csv column of the setups (docs/output.md); "1": a pure number. A
+# column not listed here is a unit of its own (drawn on an axis of its own)
+UNITS = {
+    "lstp": "load step", "load_factor": "1", "error": "1",
+    "settlement": "m", "load_kN": "kN/m", "imbalance": "N/m",                       # footing
+    "tip_u": "m", "tip_v": "m", "tip_v_beam": "m", "tip_u_over_l": "1", "tip_v_over_l": "1",
+    "v_top": "m", "force": "N/m", "force_a": "N/m",                                  # squeeze
+    "gamma": "1", "sxy_mean": "Pa", "sxy_reference": "Pa",                          # shear
+    "reaction": "N/m", "reference": "N/m",                                           # stretch
+    "push": "m", "outside": "points", "worst": "m",                                  # funnel
+    "alpha": "degrees", "f": "N/m", "fNorm": "1", "torque": "N m/m", "torqueNorm": "1",  # doughnut
+    "b": "N/m3", "F_y": "N/m", "R_x": "N/m", "R_y": "N/m",                          # ibcantilever
+}
+
+
+def unit_of(column):
+    return UNITS.get(column, "%s: unit unknown" % column)
+
+
+def axis_label(columns, unit):
+    return "%s (%s)" % (", ".join(columns), unit) if unit != "1" else ", ".join(columns)
 
 
 def grid_file(outdir, step, want_first):
@@ -82,9 +110,38 @@ def grid_file(outdir, step, want_first):
     return steps[-1] if steps else None
 
 
+def vtk_steps(outdir):
+    """the load steps whose points were written (mpData_<lstp>.vtk), in order"""
+    names = glob.glob(os.path.join(outdir, "mpData_*.vtk"))
+    return sorted(int(m.group(1)) for m in (re.search(r"mpData_(\d+)\.vtk$", n) for n in names) if m)
+
+
+def step_rows(outdir, step, final_rows):
+    """the points of load step `step` (mpData_<step>.vtk) as rows of mp_final.csv's columns; V0
+    (for --field J) from mp_final.csv when the run has as many points there (none split), else NaN"""
+    v = read_legacy_vtk(os.path.join(outdir, "mpData_%d.vtk" % step))
+    d = v["data"]
+    same = len(final_rows) == len(v["points"])
+    rows = []
+    for p, (x, y) in enumerate(v["points"]):
+        ux, uy = d["displacement"][p][:2]
+        rows.append({"x": x, "y": y, "X0": x - ux, "Y0": y - uy, "sxx": d["sigma_xx"][p],
+                     "syy": d["sigma_yy"][p], "szz": d["sigma_zz"][p], "sxy": d["sigma_xy"][p],
+                     "syz": 0.0, "szx": 0.0, "V": d["volume"][p], "lpx": d["lpx"][p],
+                     "lpy": d["lpy"][p], "V0": final_rows[p]["V0"] if same else math.nan})
+    return rows
+
+
 def draw_points(ax, fig, outdir, summary, opt):
     rows = read_csv(os.path.join(outdir, "mp_final.csv"))
     step = summary["last_converged_step"]
+    if opt.step is not None:                            # checked in main: its file is there
+        step = opt.step
+        rows = step_rows(outdir, step, rows)
+        if any(math.isnan(r["V0"]) for r in rows) and (opt.field == "J" or opt.original):
+            sys.exit("plot_run.py: --step %d: the points were split after it (%d there, %d at the end), so "
+                     "their V0 is unknown: --field J and --original need it" % (step, len(rows),
+                                                                                 summary["nmp"]))
     path = grid_file(outdir, step, opt.original and not opt.deformed_grid)
     if path:
         nodes, cells, disp = read_mesh(path)
@@ -157,8 +214,36 @@ def draw_setup_history(ax, outdir, summary, opt):
     if missing:
         sys.exit("plot_run.py: history.csv has no column %s; its columns: %s"
                  % (", ".join(missing), ", ".join(cols)))
-    draw_history(ax, [("", rows)], x, ys)
-    ax.set_title("history.csv: %s against %s" % (", ".join(ys), x), fontsize=10)
+    draw_grouped_history(ax, rows, x, ys)
+
+
+def draw_grouped_history(ax, rows, x, ys):
+    """columns ys against x from the unloaded state 0, grouped by unit (UNITS): the first unit
+    on ax's left axis, the second on a right axis of its own; further units are left out"""
+    groups = {}
+    for y in ys:
+        groups.setdefault(unit_of(y), []).append(y)
+    units = list(groups)
+    if len(units) > 2:
+        left_out = ["%s (%s)" % (", ".join(groups[u]), u) for u in units[2:]]
+        print("plot_run.py: history panel: at most two units, one on each y axis: left out %s "
+              "(draw them with --history %s ...)" % ("; ".join(left_out), x), file=sys.stderr)
+    colours = plt.rcParams["axes.prop_cycle"].by_key()["color"]
+    lines, k = [], 0
+    for side, unit in enumerate(units[:2]):
+        axis = ax if side == 0 else ax.twinx()
+        for y in groups[unit]:
+            lines += axis.plot([0] + [r[x] for r in rows], [0] + [r[y] for r in rows],
+                               "o-" if side == 0 else "s--", ms=3, color=colours[k % len(colours)],
+                               label=y)
+            k += 1
+        axis.set_ylabel(axis_label(groups[unit], unit))
+    ax.set_xlabel(axis_label([x], unit_of(x)))
+    ax.grid(True, alpha=0.3)
+    if len(lines) > 1:
+        ax.legend(lines, [ln.get_label() for ln in lines], fontsize=8)
+    title = " and ".join(", ".join(groups[u]) for u in units[:2])
+    ax.set_title("history.csv: %s against %s" % (title, x), fontsize=10)
 
 
 def title_of(summary, width=110):
@@ -180,6 +265,7 @@ def main(argv):
     ap.add_argument("--out")
     ap.add_argument("--history", nargs=2, metavar=("X", "Y"))
     ap.add_argument("--animate", action="store_true", help="an HTML page of every load step written")
+    ap.add_argument("--step", type=int, help="draw the points of load step N (mpData_N.vtk)")
     opt = ap.parse_args(argv)
     if opt.animate:
         import animate_run
@@ -187,6 +273,11 @@ def main(argv):
     if not os.path.exists(os.path.join(opt.outdir, "summary.json")):
         sys.exit("plot_run.py: %s has no summary.json: not the output folder of a run" % opt.outdir)
     summary = read_summary(opt.outdir)
+    if opt.step is not None and not os.path.exists(os.path.join(opt.outdir, "mpData_%d.vtk" % opt.step)):
+        steps = vtk_steps(opt.outdir)
+        sys.exit("plot_run.py: --step %d: %s has no mpData_%d.vtk; the load steps written there: %s"
+                 % (opt.step, opt.outdir, opt.step, ", ".join(map(str, steps)) if steps else
+                    "none (the run had --vtk 0; --vtk N writes every Nth load step)"))
     has_history = os.path.exists(os.path.join(opt.outdir, "history.csv"))
     title = title_of(summary)
     extra = 0.2 * max(0, title.count("\n") - 1)      # inches for title lines beyond two
@@ -200,6 +291,8 @@ def main(argv):
     fig.tight_layout()                                  # (it leaves room for the title)
     out = opt.out or os.path.join(opt.outdir, "run.png")
     fig.savefig(out, dpi=100)
+    if opt.step is not None:
+        print("plot_run.py: the points of load step %d (mpData_%d.vtk)" % (opt.step, opt.step))
     print(out)
 
 

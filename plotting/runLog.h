@@ -2,13 +2,15 @@
 // runLog — what a run records: per-step and per-iteration rows, timings
 //--------------------------------------------------------------------------
 // Filled by the main loop (ample/ample.cpp), written by writeOutput as
-// steps.csv, residuals.csv and summary.json. Progress lines on stdout follow
+// steps.csv, residuals.csv and summary.json; the rows of each completed load
+// step are also appended as the run goes (appendStepFiles, writeOutput.h). Progress lines on stdout follow
 // the original code: one per load step and one per Newton-Raphson iteration.
 // What the run has to say on stderr besides a stop is kept in notes and
 // printed at its end, after the reason of a stop (the first stderr line).
 //--------------------------------------------------------------------------
 #pragma once
 #include <chrono>
+#include <cstddef>
 #include <string>
 #include <utility>
 #include <vector>
@@ -61,6 +63,13 @@ decltype(auto) timed(double& seconds, F&& f, Args&&... args) {
   return f(std::forward<Args>(args)...);
 }
 
+// how much of the log is already in the step files (writeOutput.h: appendStepFiles)
+struct StepFiles {
+  bool on = false;              // startStepFiles was called: append at the end of each step
+  bool pivots = false;          // steps.csv has the negative_pivots column (solver=MUMPS, PETSC)
+  size_t steps = 0, residuals = 0, history = 0;   // rows written so far
+};
+
 struct RunLog {
   std::vector<StepRow> steps;
   std::vector<ResidualRow> residuals;
@@ -77,6 +86,7 @@ struct RunLog {
                                 // is the first line: a loose tol, steps accepted at their floor
                                 // (--accept-floor), a solver's LU fallback (ample() prints them)
   Stopwatch stepClock;          // lapped at the start and the end of each load step
+  StepFiles stream;             // the rows of completed load steps already written (ample())
 };
 
 }  // namespace ample

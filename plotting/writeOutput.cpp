@@ -77,45 +77,99 @@ static std::string jsonString(const std::string& text) {
   return s + "\"";
 }
 
-static std::string stepsCsv(const RunLog& log) {
+// steps.csv: its header (pivots: with the negative_pivots column) and one row
+static std::string stepsHeader(bool pivots) {
+  return std::string("lstp,load_factor,NRit,fErr,converged,") + (pivots ? "negative_pivots," : "") + "seconds\n";
+}
+
+static std::string stepsRow(const StepRow& r, bool pivots) {
   std::ostringstream s;
   s.precision(17);
-  const bool pivots = std::any_of(log.steps.begin(), log.steps.end(),   // solver=MUMPS's LDL^T
-                                  [](const StepRow& r) { return r.negativePivots >= 0; });
-  s << "lstp,load_factor,NRit,fErr,converged," << (pivots ? "negative_pivots," : "") << "seconds\n";
-  for (const StepRow& r : log.steps) {
-    s << r.lstp << "," << r.loadFactor << "," << r.NRit << "," << residualText(r.fErr) << ","
-      << (r.converged ? 1 : 0) << ",";
-    if (pivots) s << (r.negativePivots >= 0 ? std::to_string(r.negativePivots) : "") << ",";
-    s << r.seconds << "\n";
-  }
+  s << r.lstp << "," << r.loadFactor << "," << r.NRit << "," << residualText(r.fErr) << ","
+    << (r.converged ? 1 : 0) << ",";
+  if (pivots) s << (r.negativePivots >= 0 ? std::to_string(r.negativePivots) : "") << ",";
+  s << r.seconds << "\n";
   return s.str();
 }
 
+static bool hasPivots(const RunLog& log) {                              // solver=MUMPS's LDL^T
+  return std::any_of(log.steps.begin(), log.steps.end(), [](const StepRow& r) { return r.negativePivots >= 0; });
+}
+
+static std::string stepsCsv(const RunLog& log) {
+  const bool pivots = hasPivots(log);
+  std::string s = stepsHeader(pivots);
+  for (const StepRow& r : log.steps) s += stepsRow(r, pivots);
+  return s;
+}
+
+static const char* residualsHeader = "lstp,NRit,fErr\n";
+
+static std::string residualsRow(const ResidualRow& r) {
+  return std::to_string(r.lstp) + "," + std::to_string(r.NRit) + "," + residualText(r.fErr) + "\n";
+}
+
 static std::string residualsCsv(const RunLog& log) {
+  std::string s = residualsHeader;
+  for (const ResidualRow& r : log.residuals) s += residualsRow(r);
+  return s;
+}
+
+// history.csv: the header line of the columns of the first row, and one row (each line ends
+// with "\n")
+static std::string historyHeader(const std::vector<std::pair<std::string, double>>& row) {
+  std::string s;
+  for (size_t c = 0; c < row.size(); ++c) s += (c ? "," : "") + row[c].first;
+  return s;
+}
+
+static std::string historyRow(const std::vector<std::pair<std::string, double>>& row) {
   std::ostringstream s;
   s.precision(17);
-  s << "lstp,NRit,fErr\n";
-  for (const ResidualRow& r : log.residuals)
-    s << r.lstp << "," << r.NRit << "," << residualText(r.fErr) << "\n";
+  for (size_t c = 0; c < row.size(); ++c) {  // a value that is not finite: empty
+    const double v = row[c].second;
+    s << (c ? "," : "");
+    if (std::isfinite(v)) s << v;
+  }
   return s.str();
 }
 
 static std::string historyCsv(const Analysis& an) {
-  std::ostringstream s;
-  s.precision(17);
-  for (size_t r = 0; r < an.history.size(); ++r) {
-    if (r == 0)
-      for (size_t c = 0; c < an.history[r].size(); ++c) s << (c ? "," : "") << an.history[r][c].first;
-    s << "\n";
-    for (size_t c = 0; c < an.history[r].size(); ++c) {  // a value that is not finite: empty
-      const double v = an.history[r][c].second;
-      s << (c ? "," : "");
-      if (std::isfinite(v)) s << v;
-    }
-  }
-  s << "\n";
-  return s.str();
+  std::string s = historyHeader(an.history[0]) + "\n";
+  for (const auto& row : an.history) s += historyRow(row) + "\n";
+  return s;
+}
+
+// the text appended to a file, flushed to the operating system: a process killed after this
+// returns leaves it in the file (the write of one step's rows is one fwrite)
+static void appendText(const std::string& path, const std::string& text) {
+  if (text.empty()) return;
+  errno = 0;
+  std::FILE* f = std::fopen(path.c_str(), "ab");
+  bool ok = f && std::fwrite(text.data(), 1, text.size(), f) == text.size() && std::fflush(f) == 0;
+  if (f) ok = std::fclose(f) == 0 && ok;
+  if (!ok) throw RunError("cannot append to " + path + " (" + std::strerror(errno) + ")");
+}
+
+void startStepFiles(const std::string& outDir, const Analysis& an, RunLog& log) {
+  log.stream = StepFiles{};
+  log.stream.on = true;
+  log.stream.pivots = an.solver == LinearSolver::MUMPS || an.solver == LinearSolver::PETSC;
+  atomicWrite(outDir + "/steps.csv", stepsHeader(log.stream.pivots));
+  atomicWrite(outDir + "/residuals.csv", residualsHeader);
+}
+
+void appendStepFiles(const std::string& outDir, const Analysis& an, RunLog& log) {
+  StepFiles& w = log.stream;
+  if (!w.on) return;
+  std::string steps, residuals, history;
+  for (; w.steps < log.steps.size(); ++w.steps) steps += stepsRow(log.steps[w.steps], w.pivots);
+  for (; w.residuals < log.residuals.size(); ++w.residuals) residuals += residualsRow(log.residuals[w.residuals]);
+  for (; w.history < an.history.size(); ++w.history)
+    history += (w.history == 0 ? historyHeader(an.history[0]) + "\n" : std::string()) + historyRow(an.history[w.history]) + "\n";
+  appendText(outDir + "/residuals.csv", residuals);                  // steps.csv last: a step
+  appendText(outDir + "/history.csv", history);                      // there is whole in all three
+  appendText(outDir + "/steps.csv", steps);
 }
 
 static std::string mpFinalCsv(const Analysis& an) {

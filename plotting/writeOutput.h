@@ -14,6 +14,15 @@
 //                  one that is not finite: an empty field)
 //   summary.json   setup, parameters, sizes, iterations, convergence, wall
 //                  seconds in total and per function, the setup's results
+// As the run goes: startStepFiles writes the headers of steps.csv and
+// residuals.csv before the first step (steps.csv with the negative_pivots column
+// when solver= is MUMPS or PETSC); appendStepFiles, at the end of each completed
+// load step, appends the rows the log gained since the last call (the step's
+// residuals, its steps.csv rows, failed attempts included, and the setup's
+// history.csv row, the header with the first) and flushes them, so that a run
+// stopped or killed leaves every completed step in the three files. writeOutput
+// then writes them whole, as before (the same bytes; a steps.csv of a MUMPS run
+// whose steps had no LDL^T loses the empty negative_pivots column there).
 // Inputs:  setup · P · an (final state) · log · outDir · quiet
 // Outputs: files in outDir; the setup's results printed unless quiet
 // Tests:   tests/test_output.cpp
@@ -26,6 +35,8 @@
 namespace ample {
 
 void prepareOutput(const std::string& outDir);
+void startStepFiles(const std::string& outDir, const Analysis& an, RunLog& log);
+void appendStepFiles(const std::string& outDir, const Analysis& an, RunLog& log);  // RunError if it cannot
 void writeOutput(const Setup& setup, const Params& P, const Analysis& an, const RunLog& log,
                  const std::string& outDir, bool quiet);
 

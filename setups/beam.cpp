@@ -50,9 +50,9 @@ Analysis setupGrid(const Params& P) {
     if (x(1) < yNA && (below < 0 || x(1) > an.mpData[below].mpC(1))) below = p;
   }
   an.mpData[above].fp = an.mpData[below].fp = Vector2d(0, -get(P, "P") / 2);
-  an.afterStep = [above, below, lstps = an.lstps](Analysis& a, int lstp) {  // tip history
+  an.afterStep = [above, below](Analysis& a, int lstp, double lf) {  // tip history
     const Vector2d u = 0.5 * (a.mpData[above].u + a.mpData[below].u);
-    a.history.push_back({{"lstp", lstp}, {"load_factor", double(lstp) / lstps},
+    a.history.push_back({{"lstp", lstp}, {"load_factor", lf},
                          {"tip_u_over_l", u(0) / l}, {"tip_v_over_l", u(1) / l}});
   };
   return an;

@@ -146,7 +146,7 @@ Analysis setupGrid(const Params& P) {
   };
   const double a = holeA(P), b = holeB(P);  // the hole's perimeter (Ramanujan; 2 pi A for a circle)
   const double Ch = M_PI * (3 * (a + b) - std::sqrt((3 * a + b) * (a + 3 * b)));
-  an.afterStep = [=](Analysis& a, int lstp) {
+  an.afterStep = [=](Analysis& a, int lstp, double /*lf: alpha = lstp x dalpha*/) {
     const double f = reactionOver(a.frct, inner).magnitudes;
     double torque = 0;  // clockwise moment of the inner nodes' reactions about the centre
     for (int j : inner) {

@@ -51,10 +51,10 @@ Analysis setupGrid(const Params& P) {
   addBoundary(an, {{x0, y1}, {x0, y0}}, BoundaryType::Roller, delta);           // left side
   ibSettings(an, P);
   fillPolygon(an.mpData, Vector2d(x0, y0), n, n, an.mesh.h, P, 0.0, solidPolygon(an.boundaries));
-  an.afterStep = [push](Analysis& a, int lstp) {
+  an.afterStep = [push](Analysis& a, int lstp, double lf) {
     Vector2d sum = Vector2d::Zero();
     for (const Vector2d& f : a.ibForce) sum += f;
-    a.history.push_back({{"lstp", lstp}, {"settlement", push * lstp / a.lstps},
+    a.history.push_back({{"lstp", lstp}, {"settlement", push * lf},
                          {"load_kN", -a.ibForce[2](1) / 1e3}, {"imbalance", sum.norm()}});
   };
   return an;

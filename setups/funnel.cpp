@@ -83,7 +83,7 @@ Analysis setupGrid(const Params& P) {
     if (p(0) - o(0) > 40 * mm && p(0) - o(0) < xr) body.push_back(p);
   body.push_back(wall(40 * mm, 1));
   fillPolygon(an.mpData, Vector2d::Zero(), nx, ny, an.mesh.h, P, 0.0, body);
-  an.afterStep = [step = get(P, "step"), h](Analysis& a, int lstp) {
+  an.afterStep = [step = get(P, "step"), h](Analysis& a, int lstp, double /*lf: push = step x lstp*/) {
     int outside = 0;
     double worst = 0;                                             // most negative signed distance
     for (const MaterialPoint& mp : a.mpData)

@@ -110,8 +110,7 @@ Analysis setupGrid(const Params& P) {
   for (MaterialPoint& mp : an.mpData) mp.fp = b * mp.vp0 * dir;      // body force as fp (eq 27)
 
   const double E = get(P, "E"), nu = get(P, "nu");
-  an.afterStep = [R, O = g.O, b, E, nu, lstps = an.lstps, tol = an.tol](Analysis& a, int lstp) {
-    const double lf = double(lstp) / lstps;
+  an.afterStep = [R, O = g.O, b, E, nu, tol = an.tol](Analysis& a, int lstp, double lf) {
     Vector2d uTip = Vector2d::Zero(), F = Vector2d::Zero(), Rct = Vector2d::Zero();
     double V = 0, wTip = 0;
     const double uMax = 2 * beamTheory(0, lf * b, E, nu) + a.mesh.h(0);  // > any point's share

@@ -31,6 +31,8 @@ Analysis baseAnalysis(const Params& P) {
   an.formulation = Formulation(int(get(P, "formulation")));
   an.domainUpdate = DomainUpdate(int(get(P, "domainUpdate")));
   an.locking = Locking(int(get(P, "locking")));
+  an.geostatic = get(P, "geostatic") == 1;
+  an.K0 = get(P, "K0");
   return an;
 }
 

@@ -129,7 +129,18 @@ Params commonParams(int lstps) {
           .help("GIMP domain update ([Lagrangian] eqs 32-39)"),
       Param("E", 1.0).above(0).help("Young's modulus (Pa)"),
       Param("nu", 0.0).above(-1).below(0.5).help("Poisson's ratio"),
-      Param("rhoY", 20e3).above(0).help("von Mises strength rho_y = sqrt(2 J2) at yield (Pa)"),
+      Param("rhoY", 20e3).above(0).help("von Mises strength rho_y = sqrt(2 J2) at yield (Pa); uniaxial yield "
+                                         "stress sigma_y = sqrt(3/2) rho_y; plane-strain undrained shear strength "
+                                         "c_u = rho_y / sqrt(2) (Tresca-matched), so rhoY = sqrt(2) c_u, e.g. "
+                                         "c_u = 10 kPa: rhoY=14142.1356"),
+      Param("geostatic", 0).choice(0, {"off", "on"})
+          .help("initial stress (ample/initial/geostatic.h): on = every point starts from sigma_yy = -rho g d "
+                "(d its depth below the top of the points of its column of cells), sigma_xx = sigma_zz = K0 "
+                "sigma_yy, with its elastic strain, and the weight acts in full from load step 1 (setups with "
+                "gravity, regular grid; a von Mises point beyond yield is refused); off = the papers' start "
+                "from zero stress, the weight ramped with the load steps"),
+      Param("K0", 1).range(0, 10).help("geostatic=on: the ratio sigma_xx / sigma_yy = sigma_zz / sigma_yy of the "
+                                       "initial stress (1 = isotropic)"),
   };
 }
 

@@ -90,7 +90,7 @@ Analysis setupGrid(const Params& P) {
     for (int n = 0; n < a.mesh.nodes(); ++n)
       if (fixed[n]) a.mesh.bc.insert(a.mesh.bc.end(), {{dof(n, 0), dg * a.mesh.coord(n, 1)}, {dof(n, 1), 0.0}});
   };
-  an.afterStep = [dg](Analysis& a, int lstp) {
+  an.afterStep = [dg](Analysis& a, int lstp, double /*lf: gamma = lstp x dg*/) {
     const Vector6d ref = reference(a.mpData[0], lstp, dg);
     double sxy = 0.0;
     for (const MaterialPoint& mp : a.mpData) sxy += mp.sig(3) / a.mpData.size();

@@ -50,11 +50,13 @@ Analysis setupGrid(const Params& P) {
   fixDofs(an.mesh, 1, [&](double, double Y) { return Y > H - eps; }, dv);  // top: pushed
   fillBlock(an.mpData, Vector2d::Zero(), nels, nels, an.mesh.h, P, 1.0);
   const double C = stiffness(P), top = nels * (nels + margin + 1);  // first node of the top row
-  an.afterStep = [=](Analysis& a, int lstp) {                    // the force on the top
+  const double squash = get(P, "squash");
+  an.afterStep = [=](Analysis& a, int lstp, double lf) {         // the force on the top
     double force = 0;
     for (int n = 0; n <= nels + margin; ++n) force += a.frct(dof(top + n, 1));
-    a.history.push_back({{"lstp", lstp}, {"v_top", dv * lstp},
-                         {"force", force}, {"force_a", C * dv * lstp / H * W}});
+    const double vTop = -squash * H * lf;                        // the top's displacement so far
+    a.history.push_back({{"lstp", lstp}, {"v_top", vTop},
+                         {"force", force}, {"force_a", C * vTop / H * W}});
   };
   return an;
 }

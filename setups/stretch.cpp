@@ -69,7 +69,7 @@ Analysis setupGrid(const Params& P) {
     const double eps = 1e-9 * L0;
     fixDofs(a.mesh, 0, [&](double X, double) { return X > L0 + (lstp - 1) * du - eps; }, du);
   };
-  an.afterStep = [=](Analysis& a, int lstp) {
+  an.afterStep = [=](Analysis& a, int lstp, double /*lf: stretch = lstp x du*/) {
     double R = 0.0;  // sum of the x reactions on the pulled side
     for (const BC& c : a.mesh.bc)
       if (c.value != 0.0) R += a.frct(c.dof);

@@ -10,6 +10,10 @@
 # convergence lines on at least 0.2 % of the right one. The points' panel is to scale (one
 # metre as many pixels in x as in y, the column of compaction too), and a run that stopped
 # (collapse on a grid too narrow) has its whole message in the title, inside the picture.
+# --step N draws load step N's points (mpData_N.vtk): the left panel's title names step N
+# and the program says so; a step with no mpData_N.vtk is refused naming --step and the
+# steps written. The history panel puts columns of two units on two y axes (footing:
+# settlement against load_kN and imbalance, kN/m and N/m), each labelled with its unit.
 # A folder that is not a run's output must give a clear error and a non-zero exit.
 # Skips (exit 77) when no python3 with matplotlib is found (/usr/bin/python3 first).
 # Usage: tests/plot_run_test.sh AMPLE_BINARY WORKDIR
@@ -79,8 +83,45 @@ for run in ("compaction", "stretch", "stopped"):
 sys.exit(bad)
 PY
 
+# --step: the drawn step named in the panel and on stdout; a step not written is refused
+out=$("$py" "$root/plotting/plot_run.py" "$work/stopped" --step 2 --out "$work/step2.png")
+grep -q "the points of load step 2 (mpData_2.vtk)" <<< "$out" || { echo "--step 2 not said: $out"; exit 1; }
+"$py" - "$root/plotting" "$work" <<'PY'
+import os, sys
+sys.path.insert(0, sys.argv[1])
+import matplotlib.pyplot as plt
+import plot_run
+outdir = os.path.join(sys.argv[2], "stopped")
+plot_run.main([outdir, "--step", "2", "--out", os.path.join(sys.argv[2], "step2_check.png")])
+title = plt.gcf().axes[0].get_title()
+last = plot_run.read_summary(outdir)["last_converged_step"]
+ok = "load step 2" in title and last != 2
+print("--step 2: left panel '%s' (last converged step %d): %s" % (title, last, "ok" if ok else "BAD"))
+sys.exit(0 if ok else 1)
+PY
+if out=$("$py" "$root/plotting/plot_run.py" "$work/stopped" --step 3 2>&1); then
+  echo "plot_run.py --step 3 accepted a step with no mpData_3.vtk"; exit 1
+fi
+grep -q -- "--step 3: .* has no mpData_3.vtk; the load steps written there: 2, 4" <<< "$out" ||
+  { echo "unclear --step error: $out"; exit 1; }
+
+# two units, two y axes, each labelled with its unit
+"$ample" footing lstps=4 --vtk 0 --quiet --out "$work/footing"
+"$py" - "$root/plotting" "$work" <<'PY'
+import os, sys
+sys.path.insert(0, sys.argv[1])
+import matplotlib.pyplot as plt
+import plot_run
+outdir = os.path.join(sys.argv[2], "footing")
+plot_run.main([outdir, "--history", "settlement", "load_kN,imbalance", "--out", os.path.join(sys.argv[2], "footing.png")])
+labels = sorted(ax.get_ylabel() for ax in plt.gcf().axes if ax.get_ylabel() in ("load_kN (kN/m)", "imbalance (N/m)"))
+ok = labels == ["imbalance (N/m)", "load_kN (kN/m)"]
+print("history axes: %s: %s" % (labels, "ok" if ok else "BAD"))
+sys.exit(0 if ok else 1)
+PY
+
 if out=$("$py" "$root/plotting/plot_run.py" "$work" 2>&1); then
   echo "plot_run.py accepted $work, which is not a run's output folder"; exit 1
 fi
 grep -q "has no summary.json" <<< "$out" || { echo "unclear error: $out"; exit 1; }
-echo "plot_run.py: 2 pictures not blank, 3 to scale with whole titles, bad folder refused"
+echo "plot_run.py: 2 pictures not blank, 3 to scale with whole titles, --step drawn and checked, two units on two axes, bad folder refused"

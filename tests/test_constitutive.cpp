@@ -365,3 +365,43 @@ TEST_SUITE("VMconst") {
       }
   }
 }
+
+// rho_y against the strengths a soil engineer gives (setups.cpp's help of rhoY, docs/setups.md):
+// at yield rho = sqrt(2 J2) = rho_y; plane-strain shear (simple or pure) reaches
+// tau_max = rho_y / sqrt(2) = c_u, and an isochoric axisymmetric strain reaches
+// sigma_1 - sigma_3 = sqrt(3/2) rho_y = sigma_y. The expected values are the hand ones of
+// rhoY = 14142.1356 (c_u = 10 kPa): c_u = 10000 Pa, sigma_y = sqrt(3) c_u = 17320.508 Pa.
+TEST_SUITE("VMconst") {
+  // the stress reached by driving a strain path in 200 equal increments through VMconst
+  // (the elastic strain carried from one increment to the next, as detMPs carries epsEn)
+  Vector6d driven(const Vector6d& total, const Vector3d& m) {
+    Vector6d epsE = Vector6d::Zero(), tau = Vector6d::Zero();
+    for (int k = 0; k < 200; ++k) {
+      const ConstOut out = VMconst(epsE + total / 200, m);
+      epsE = out.epsE, tau = out.Ksig;
+    }
+    return tau;
+  }
+  double tauMax(const Vector6d& s) {  // the largest in-plane shear stress (Mohr's circle)
+    return std::sqrt(0.25 * (s(0) - s(1)) * (s(0) - s(1)) + s(3) * s(3));
+  }
+
+  TEST_CASE("VMconst: rhoY = sqrt(2) c_u: plane-strain simple and pure shear yield at tau_max = 10 kPa, uniaxial at 17.32 kPa") {
+    const Vector3d soil(1e7, 0.49, 14142.1356);                 // undrained: nu near 0.5
+    const double cu = 10000.0, sigmaY = 17320.508;              // by hand
+    const double Gs = soil(0) / (2 * (1 + soil(1)));            // 3.356e6 Pa: yield at gamma ~ 3e-3
+    Vector6d simple = Vector6d::Zero(), pure = Vector6d::Zero(), axi = Vector6d::Zero();
+    simple(3) = 0.05;                                           // gamma_xy, 17 times the yield strain
+    pure << 0.025, -0.025, 0, 0, 0, 0;                          // eps_xx = -eps_yy, eps_zz = 0
+    axi << 0.04, -0.02, -0.02, 0, 0, 0;                         // isochoric, axisymmetric about x
+    const Vector6d s1 = driven(simple, soil), s2 = driven(pure, soil), s3 = driven(axi, soil);
+    CHECK(tauMax(s1) == doctest::Approx(cu).epsilon(1e-8));
+    CHECK(tauMax(s2) == doctest::Approx(cu).epsilon(1e-8));
+    CHECK(s3(0) - s3(1) == doctest::Approx(sigmaY).epsilon(1e-7));
+    CHECK(s3(1) == doctest::Approx(s3(2)).epsilon(1e-12));
+    // before yield the same paths are elastic: a tenth of the yield strain gives G gamma
+    Vector6d small = Vector6d::Zero();
+    small(3) = 0.1 * cu / Gs;
+    CHECK(tauMax(driven(small, soil)) == doctest::Approx(0.1 * cu).epsilon(1e-10));
+  }
+}

@@ -5,7 +5,8 @@
 // only where the analysis asks for it:
 //   startStep    progress line, step clock, the setup's beforeStep
 //   elemMPinfo   elemMPinfoFast for large runs (opt.basisLoop; not in a Debug build), timed
-//   stepTerms    the body force (detBodyForce), the ghost penalty of the step
+//   stepTerms    the weight in full from step 1 (geostatic=on: initial/geostatic.h),
+//                the body force (detBodyForce), the ghost penalty of the step
 //                (remedies/ghostPenalty.h), the implicit boundaries' K and f
 //                (boundaries/ibStiffness.h)
 //   detFDoFs     the lone-node rule (remedies/loneNodes.h): lone=1 every step, lone=2
@@ -23,7 +24,8 @@
 //   afterUpdate  steps.csv, the finite element mode's moveMesh, the boundaries'
 //                motion, the split= remedy
 //   failedStep   the remedies lone=2, ghost= and substeps= (remedies/loadSteps.h)
-//   endStep      the setup's afterStep, postPro, the step's time
+//   endStep      the setup's afterStep, postPro, the step's time, its rows of
+//                steps.csv, residuals.csv and history.csv appended (writeOutput.h)
 // See run.h for inputs and outputs.
 //--------------------------------------------------------------------------
 #include "run.h"
@@ -32,6 +34,7 @@
 #include "ample/domains/updateDomain.h"
 #include "ample/errors.h"
 #include "ample/fast/fastFrom.h"
+#include "ample/initial/geostatic.h"
 #include "ample/locking/detMPsFbar.h"
 #include "ample/meshes/cellSearch.h"
 #include "ample/remedies/ghostPenalty.h"
@@ -85,7 +88,9 @@ int ample(const Setup& setup, const Params& P, const RunOptions& opt) {
   Analysis an = setup.setupGrid(P);                                  // setupGrid
   an.name = setup.name;
   checkAnalysis(an);
+  if (an.geostatic) applyGeostatic(an);                              // K0 stress (InputError: exit 2)
   prepareOutput(opt.outDir);
+  startStepFiles(opt.outDir, an, log);                               // rows appended after each step
   log.notes += looseTolWarning(an);                                  // tol > 1e-3: allowed, but said
   auto stop = [&](const std::string& why) {                          // the run cannot go on
     if (!log.steps.empty() && !log.steps.back().converged) log.steps.back().seconds = log.stepClock.lap();
@@ -139,6 +144,7 @@ static Hooks runHooks(Analysis& an, RunLog& log, const RunOptions& opt, RunState
   };
   h.stepTerms = [&T, &x](Analysis& a, const Increment& inc, Eigen::VectorXd& fext) {
     T.detExtForce += x.gap.lap();
+    if (a.geostatic) fext += timed(T.detExtForce, selfWeight, int(fext.size()), a.g, a.mpData) * (1.0 - inc.lf1);
     if (a.bodyForce) fext += timed(T.detExtForce, detBodyForce, int(fext.size()), a.bodyForce, inc.lf1, a.mpData);
     x.Kgp = ghostPenaltyOf(a);                                       // remedy (off: empty)
     if (!a.boundaries.empty())                                       // [Boundaries]: K_IB, f_IB
@@ -207,11 +213,12 @@ static Hooks runHooks(Analysis& an, RunLog& log, const RunOptions& opt, RunState
     retryStep(a, inc, e, hooks, opt.quiet);                          // remedies (off: throws e)
   };
   h.endStep = [&log, &opt, &T](Analysis& a, const Increment& inc) {
-    if (a.afterStep) a.afterStep(a, inc.lstp);                       // setup's hook
+    if (a.afterStep) a.afterStep(a, inc.lstp, inc.lf1);             // setup's hook
     timed(T.postPro, postPro, a.mesh, a.mpData, a.uvw, inc.lstp, opt.vtkEvery, opt.outDir, opt.vtkFormat,
           opt.vtkGridEvery || a.fem || a.gridMoves);
     log.steps.back().seconds = log.stepClock.lap();
     log.lastConverged = inc.lstp;
+    appendStepFiles(opt.outDir, a, log);                             // the step's rows, flushed (ample())
     if (inc.lstp == opt.lastStep) throw LastStepDone();
   };
   return h;
