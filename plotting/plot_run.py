@@ -252,7 +252,8 @@ def title_of(summary, width=110):
                                          summary["lstps"])
     lines = [head + "converged"] if summary["converged"] else \
         textwrap.wrap(head + "stopped: " + summary["message"], width)
-    results = ", ".join("%s = %.4g" % kv for kv in list(summary["results"].items())[:3])
+    results = ", ".join("%s = %s" % (k, "null" if v is None else "%.4g" % v)   # null: undefined
+                        for k, v in list(summary["results"].items())[:3])
     return "\n".join(lines + ([results] if results else []))
 
 

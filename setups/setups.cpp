@@ -30,6 +30,9 @@ namespace annulus    { Params params(); Analysis setupGrid(const Params&); Resul
 namespace doughnut   { Params params(); Analysis setupGrid(const Params&); Results results(const Analysis&, const Params&); }
 namespace footing    { Params params(); Analysis setupGrid(const Params&); Results results(const Analysis&, const Params&); }
 namespace squeeze    { Params params(); Analysis setupGrid(const Params&); Results results(const Analysis&, const Params&); }
+namespace prandtl    { Params params(); Analysis setupGrid(const Params&); Results results(const Analysis&, const Params&); }
+namespace lame       { Params params(); Analysis setupGrid(const Params&); Results results(const Analysis&, const Params&); }
+namespace layer      { Params params(); Analysis setupGrid(const Params&); Results results(const Analysis&, const Params&); }
 
 const std::vector<Setup>& setupsTable() {
   static const std::vector<Setup> table = {
@@ -61,6 +64,12 @@ const std::vector<Setup>& setupsTable() {
        doughnut::params, doughnut::setupGrid, doughnut::results},
       {"squeeze", "elastic block squeezed from above, sides free: the worked setup of docs/new-setup.md",
        squeeze::params, squeeze::setupGrid, squeeze::results},
+      {"prandtl", "rigid strip footing on weightless von Mises soil, q_u = (2 + pi) c_u: a volumetric locking benchmark",
+       prandtl::params, prandtl::setupGrid, prandtl::results},
+      {"lame", "thick-walled elastic cylinder under internal pressure (Lame): a volumetric locking benchmark",
+       lame::params, lame::setupGrid, lame::results},
+      {"layer", "elastic layer under self weight, nu = 0.49: the mean-stress checkerboard of locking",
+       layer::params, layer::setupGrid, layer::results},
   };
   return table;
 }
