@@ -77,9 +77,9 @@ Analysis setupGrid(const Params& P) {
   std::vector<int> nodes;                                              // the footing's nodes
   for (int n = 0; n < an.mesh.nodes(); ++n)
     if (footing(an.mesh.coord(n, 0), an.mesh.coord(n, 1))) nodes.push_back(n);
-  an.afterStep = [=](Analysis& a, int lstp) {
+  an.afterStep = [=](Analysis& a, int lstp, double lf) {
     const double load = -2 * reactionOver(a.frct, nodes).sum(1);       // full footing (N/m)
-    a.history.push_back({{"lstp", lstp}, {"settlement_m", -dv * lstp},
+    a.history.push_back({{"lstp", lstp}, {"settlement_m", -dv * a.lstps * lf},
                          {"load_kN", load / 1e3}, {"q_over_cu", load / B / cu}});
   };
   return an;
