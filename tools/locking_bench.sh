@@ -8,7 +8,8 @@
 # parameters, the locking choice, the exit code, the wall time (s) and the run's three error
 # figures from summary.json (name and value). A figure that is undefined is an empty field.
 #   prandtl: q_over_cu, error = (q/c_u) / (2 + pi) - 1, plateau_change
-#            nB = 2 4 8 (16 with FULL=1), rough 0 1, MPM and GIMP, nu = 0.3 and 0.49
+#            nB = 2 4 8 (16 with FULL=1), rough 0 1, MPM and GIMP, nu = 0.3 and 0.49, substeps=4
+#            (a load step that fails is retried in halves; a run that converges is unchanged)
 #   lame:    error_inner, error_max, stress_rms; nels = 4 8 16 32, nu = 0.3 and 0.4999, MPM and CPDI2
 #   layer:   checker_rms, checker_max, dev_cell_rms; sides=free, nels = 4 8 16 32, nu = 0.49
 #            (and nu = 0.3), MPM; sides=roller at nels = 8
@@ -62,7 +63,7 @@ for s in $SETUPS; do
   case $s in
     prandtl)
       for nu in 0.3 0.49; do for type in MPM GIMP; do for rough in 1 0; do for n in $grids_p; do
-        run prandtl q_over_cu error plateau_change nB=$n rough=$rough mpType=$type nu=$nu
+        run prandtl q_over_cu error plateau_change nB=$n rough=$rough mpType=$type nu=$nu substeps=4
       done; done; done; done ;;
     lame)
       for nu in 0.3 0.4999; do for type in MPM CPDI2; do for n in 4 8 16 32; do
