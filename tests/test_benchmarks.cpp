@@ -147,12 +147,13 @@ TEST_SUITE("benchmarks") {
 
   TEST_CASE("locking=Fbar: Lame at nu = 0.4999 within 1 % at the inner surface (16 cells), where plain MPM is 30 % short") {
     // measured 2026-12-06 (nels = 16, mp = 2, SS): inner ring +0.34 %, largest 2.4 % of u_r(a)
-    // with locking=Fbar; MPM with UL the same to 1e-3 (the pressure is small: eps ~ 1e-3)
+    // with locking=Fbar; MPM with UL the same to 1e-3 (the pressure is small: eps ~ 1e-3). At
+    // nu = 0.4999 (K / G = 5000) UL's residual stalls at its round-off floor, 1.5e-9: tol = 1e-8
     for (double form : {3.0, 1.0}) {
       CAPTURE(form);
       RunLog log;
       const Analysis an = testing::runSetup("lame", {{"nels", 16}, {"nu", 0.4999}, {"locking", 1},
-                                                     {"formulation", form}}, log);
+                                                     {"formulation", form}, {"tol", 1e-8}}, log);
       REQUIRE(log.converged);
       const auto err = lameErrors(an, 0.4999);
       CHECK(std::abs(err.second) < 0.01);
@@ -181,7 +182,7 @@ TEST_SUITE("benchmarks") {
     }
   }
 
-  TEST_CASE("locking=Fbar: the free-sided layer's checkerboard (nu = 0.49) shrinks at least 10 times; its cell means stay") {
+  TEST_CASE("locking=Fbar: the free-sided layer's checkerboard (nu = 0.49) shrinks at least 10 times; far from the free side its cells carry the 1-D state") {
     // measured 2026-12-06 (nels = 4): the spread of the points' mean stress about their cell's mean
     // 0.206 rho g H plain, 2e-16 with locking=Fbar (a cell's points share its volume change, and in
     // linear elasticity p = K thetabar); the cell means agree with the plain run's within 3 % rho g H
@@ -193,12 +194,17 @@ TEST_SUITE("benchmarks") {
       REQUIRE(log.converged);
     }
     CHECK(checkerboard(an[1], h, rho * g * H) < 0.1 * checkerboard(an[0], h, rho * g * H));
-    std::map<std::pair<int, int>, double> mean[2];                // cell means, each run
-    for (int lock : {0, 1})
-      for (const MaterialPoint& mp : an[lock].mpData)
-        mean[lock][{int(std::floor(mp.X0(0) / h)), int(std::floor(mp.X0(1) / h))}] += meanStress(mp) / 4;
+    // far from the free side (x < W - 4 H = 20 m) the layer is the confined 1-D column: each
+    // cell's mean of p against the mean of -rho g d (1 + 2 K0) / 3 over its points (measured
+    // 2026-12-06: 0.63 % of rho g H at most with locking=Fbar, 0.61 % plain)
+    const double K0 = 0.49 / 0.51;
+    std::map<std::pair<int, int>, double> diff;
+    for (const MaterialPoint& mp : an[1].mpData)
+      if (mp.X0(0) < 20.0)
+        diff[{int(std::floor(mp.X0(0) / h)), int(std::floor(mp.X0(1) / h))}] +=
+            (meanStress(mp) + rho * g * (H - mp.X0(1)) * (1 + 2 * K0) / 3) / 4;
     double worst = 0;
-    for (const auto& c : mean[0]) worst = std::max(worst, std::abs(c.second - mean[1][c.first]));
-    CHECK(worst < 0.03 * rho * g * H);
+    for (const auto& c : diff) worst = std::max(worst, std::abs(c.second));
+    CHECK(worst < 0.015 * rho * g * H);
   }
 }

@@ -217,6 +217,19 @@ TEST_SUITE("cli") {
     CHECK(runBinary("collapse --help") == 0);
   }
 
+  TEST_CASE("cli: locking=Fbar on a general mesh or in the finite element mode is refused before any work, naming locking") {
+    const std::string dir = std::string(AMPLE_TEST_TMP) + "/cli_locking";
+    std::filesystem::remove_all(dir);
+    for (const char* args : {"annulus locking=Fbar", "doughnut locking=1", "doughnut fem=1 mpType=1 locking=Fbar"}) {
+      CAPTURE(args);
+      std::string err;
+      CHECK(runBinary(std::string(args) + " --out " + dir, &err) == 2);
+      CHECK(err.find("locking=Fbar") != std::string::npos);
+      CHECK(err.find("locking=none") != std::string::npos);   // what to use instead
+    }
+    CHECK(!std::filesystem::exists(dir));
+  }
+
   TEST_CASE("cli: the program exits 0 on a converged run and 1 on a failed one") {
     const std::string dir = std::string(AMPLE_TEST_TMP) + "/cli_run";
     CHECK(runBinary("compaction nelsy=4 lstps=2 E=1e6 --vtk 0 --quiet --out " + dir) == 0);
