@@ -16,7 +16,7 @@ Right, low:  the setup's history.csv if it writes one (e.g. load against displac
              panel (the columns of a third are left out, said on stderr).
 
 usage: plot_run.py OUTDIR [--field NAME] [--original] [--deformed-grid] [--out PNG]
-                   [--history X Y[,Y...]] [--step N]
+                   [--history X Y[,Y...]] [--step N] [--window X0 X1 Y0 Y1]
        plot_run.py --animate OUTDIR [--field NAME] [--out HTML]
   --field         one of: vonMises sxx syy szz sxy p ux uy u J  (default vonMises)
   --original      points at their original positions X0 (and the first grid written, mesh.vtk)
@@ -28,6 +28,7 @@ usage: plot_run.py OUTDIR [--field NAME] [--original] [--deformed-grid] [--out P
   --step          draw the points of load step N (mpData_N.vtk, written with --vtk) instead of
                   the last converged step's; a step with no mpData_N.vtk is an error that names
                   the steps there are
+  --window        only the points in [X0, X1] x [Y0, Y1] (m), e.g. the mechanism under a footing
   --animate       instead of the PNG, one self-contained HTML page of every load step written
                   (mpData_<lstp>.vtk), with a slider and play/pause (animate_run.py, default
                   OUTDIR/run.html; needs no matplotlib)
@@ -70,6 +71,7 @@ HISTORY = {
     "stretch": ("lstp", ["reaction", "reference"]),
     "ibcantilever": ("load_factor", ["tip_v", "tip_v_beam"]),
     "doughnut": ("alpha", ["fNorm"]),
+    "prandtl": ("settlement_m", ["q_over_cu"]),
 }
 
 # the unit of each history.csv column of the setups (docs/output.md); "1": a pure number. A
@@ -84,6 +86,7 @@ UNITS = {
     "push": "m", "outside": "points", "worst": "m",                                  # funnel
     "alpha": "degrees", "f": "N/m", "fNorm": "1", "torque": "N m/m", "torqueNorm": "1",  # doughnut
     "b": "N/m3", "F_y": "N/m", "R_x": "N/m", "R_y": "N/m",                          # ibcantilever
+    "settlement_m": "m", "q_over_cu": "1",                                           # prandtl
 }
 
 
@@ -159,6 +162,8 @@ def draw_points(ax, fig, outdir, summary, opt):
     boxes, values = [], []
     for r in rows:
         x, y = (r["X0"], r["Y0"]) if opt.original else (r["x"], r["y"])
+        if opt.window and not (opt.window[0] <= x <= opt.window[1] and opt.window[2] <= y <= opt.window[3]):
+            continue
         if r["lpx"] > 0 and r["lpy"] > 0 and not opt.original:
             hx, hy = r["lpx"], r["lpy"]
         else:
@@ -173,6 +178,9 @@ def draw_points(ax, fig, outdir, summary, opt):
     ax.add_collection(pc)
     ax.update_datalim([p for b in boxes for p in b])
     ax.autoscale_view()
+    if opt.window:
+        ax.set_xlim(opt.window[0], opt.window[1])
+        ax.set_ylim(opt.window[2], opt.window[3])
     ax.set_aspect("equal", adjustable="datalim")      # to scale: a point's square stays square
     ax.set_xlabel("x (m)")
     ax.set_ylabel("y (m)")
@@ -267,7 +275,11 @@ def main(argv):
     ap.add_argument("--history", nargs=2, metavar=("X", "Y"))
     ap.add_argument("--animate", action="store_true", help="an HTML page of every load step written")
     ap.add_argument("--step", type=int, help="draw the points of load step N (mpData_N.vtk)")
+    ap.add_argument("--window", nargs=4, type=float, metavar=("X0", "X1", "Y0", "Y1"),
+                    help="draw only the points in [X0, X1] x [Y0, Y1] (m), the colours scaled to them")
     opt = ap.parse_args(argv)
+    if opt.window and not (opt.window[0] < opt.window[1] and opt.window[2] < opt.window[3]):
+        sys.exit("plot_run.py: --window X0 X1 Y0 Y1 needs X0 < X1 and Y0 < Y1")
     if opt.animate:
         import animate_run
         return animate_run.main([a for a in argv if a != "--animate"])
