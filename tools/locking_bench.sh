@@ -11,7 +11,7 @@
 #            nB = 2 4 8 (16 with FULL=1), rough 0 1, MPM and GIMP, nu = 0.3 and 0.49, substeps=4
 #            (a load step that fails is retried in halves; a run that converges is unchanged)
 #   lame:    error_inner, error_max, stress_rms; nels = 4 8 16 32, nu = 0.3 and 0.4999, MPM and CPDI2
-#   layer:   checker_rms, checker_max, dev_cell_rms; sides=free, nels = 4 8 16 32, nu = 0.49
+#   layer:   checker_rms, dev_all_rms, dev_cell_rms; sides=free, nels = 4 8 16 32, nu = 0.49, 0.499
 #            (and nu = 0.3), MPM; sides=roller at nels = 8
 # Usage:  tools/locking_bench.sh [OUT.csv]        (default docs/results/locking_<commit>.csv)
 #   env:  AMPLE=build/release/ample  LOCKING="none Fbar"  FULL=0|1  SETUPS="prandtl lame layer"
@@ -70,10 +70,10 @@ for s in $SETUPS; do
         run lame error_inner error_max stress_rms nels=$n nu=$nu mpType=$type
       done; done; done ;;
     layer)
-      for nu in 0.49 0.3; do for n in 4 8 16 32; do
-        run layer checker_rms checker_max dev_cell_rms sides=free nels=$n nu=$nu mpType=MPM
+      for nu in 0.49 0.499 0.3; do for n in 4 8 16 32; do
+        run layer checker_rms dev_all_rms dev_cell_rms sides=free nels=$n nu=$nu mpType=MPM
       done; done
-      run layer checker_rms checker_max dev_cell_rms sides=roller nels=8 nu=0.49 mpType=MPM ;;
+      run layer checker_rms dev_all_rms dev_cell_rms sides=roller nels=8 nu=0.49 mpType=MPM ;;
     *) echo "locking_bench.sh: unknown setup '$s' (prandtl, lame, layer)" >&2; exit 2 ;;
   esac
 done
