@@ -60,11 +60,17 @@ static void keepIndependentLoneNodes(const MaterialPoint& mp, const std::vector<
   }
 }
 
+// the number of points linked to each node (node n: count[n])
+static std::vector<int> pointsPerNode(int nodes, const std::vector<MaterialPoint>& mpData) {
+  std::vector<int> count(nodes, 0);
+  for (const MaterialPoint& mp : mpData)
+    std::for_each(mp.nIN.begin(), mp.nIN.begin() + mp.nn, [&count](int node) { ++count[node]; });
+  return count;
+}
+
 std::vector<int> detFDoFsLone(const Mesh& mesh, const std::vector<MaterialPoint>& mpData,
                               const StiffnessSources& others) {
-  std::vector<int> links(mesh.nodes(), 0);  // points linked to each node
-  for (const MaterialPoint& mp : mpData)
-    for (int v = 0; v < mp.nn; ++v) links[mp.nIN[v]]++;
+  std::vector<int> links = pointsPerNode(mesh.nodes(), mpData);
   std::vector<char> isFree(mesh.nDoF(), 0); // 1: the dof is solved for
   for (int d : detFDoFs(mesh, mpData)) isFree[d] = 1;
   for (const SpMat* K : others)             // a node stiffened otherwise is not lone
