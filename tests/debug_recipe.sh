@@ -21,7 +21,9 @@
 #       pmat X        "X = [RxC]" then R rows of C numbers
 #       finish        "Value returned is"
 #   - and the stated values of the first stop of the first recipe (compaction,
-#     first pass: nothing has moved): mp.F = I, uvw all zero.
+#     first pass: nothing has moved): mp.F = I, uvw all zero;
+#   - from that stop, `step` reaches Hooke3d in at most the steps the README states
+#     ("Hooke3d: N steps"), with the recipe's own skips (tools/gdb/skips.py).
 # Skips (exit 77) when gdb is not installed, and in the student copy (docs/exercises.md).
 # Usage: tests/debug_recipe.sh   (from anywhere; works in the source tree)
 #--------------------------------------------------------------------------
@@ -127,6 +129,7 @@ while IFS=$'\t' read -r -u 3 -a parts; do
   done
   got=$(grep -cE '^\$[0-9]+ = ' <<< "$out")
   [ "$got" -ge "$prints" ] || fail "recipe $n: $prints prints, $got values"
+  [ "$n" = 1 ] && first=("${words[@]}")
   if [ "$n" = 1 ]; then                                  # the stated values of the first stop
     grep -Eq '^\$[0-9]+ = \[3x3\] \{\{1, 0, 0\}, \{0, 1, 0\}, \{0, 0, 1\}\}$' <<< "$out" ||
       fail "recipe 1: mp.F at the first stop is not [3x3] {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}}"
@@ -134,6 +137,19 @@ while IFS=$'\t' read -r -u 3 -a parts; do
       fail "recipe 1: uvw at the first stop is not all zero"
   fi
 done 3<<< "$recipes"
+
+# the README's count of `step`s from the first recipe's stop to Hooke3d ("Hooke3d: N steps"),
+# with the recipe as written: tools/debug.sh loads the skips (tools/gdb/skips.py); without
+# them `step` enters the standard library and Eigen and takes thousands
+stated=$(tr '\n' ' ' < README.md | grep -oE 'Hooke3d: [0-9]+ +steps' | head -1 | sed -E 's/^Hooke3d: ([0-9]+).*/\1/')
+if [ -z "$stated" ]; then fail "README.md states no 'Hooke3d: N steps'"
+elif [ "${first[0]:-}" != tools/debug.sh ]; then fail "the first recipe is not tools/debug.sh"
+else
+  walk="python n = next((k for k in range(1, 5001) if (gdb.execute('step', to_string=True) or True) and gdb.selected_frame().name().endswith('Hooke3d')), None); print('steps to Hooke3d:', n)"
+  steps=$("${first[@]}" --no-build --ex "$walk" < /dev/null 2>&1 | grep -oE '^steps to Hooke3d: [0-9]+' | grep -oE '[0-9]+$')
+  echo "== the first recipe, then step to Hooke3d: ${steps:-never} steps (README: $stated)"
+  [ -n "$steps" ] && [ "$steps" -le "$stated" ] || fail "step from the first recipe's stop reaches Hooke3d in ${steps:-over 5000} steps, the README says $stated"
+fi
 
 [ "$fails" = 0 ] || { echo "$fails check(s) failed"; exit 1; }
 echo "debug recipes: $n run, every check passed"

@@ -3,8 +3,10 @@
 # debug.sh — one command from a setup to gdb stopped in the point loop
 #--------------------------------------------------------------------------
 # Builds the Debug program only (cmake --preset debug, target ample: -O0 -g3,
-# Eigen values NaN until set), loads our Eigen printers (tools/gdb/eigen.py)
-# and the `point` command (tools/gdb/ample.gdb), and runs the setup under gdb
+# Eigen values NaN until set), loads our Eigen printers (tools/gdb/eigen.py),
+# the skips that keep `step` in our code (tools/gdb/skips.py: the standard
+# library, Eigen, the C library's maths) and the `point` command
+# (tools/gdb/ample.gdb), and runs the setup under gdb
 # up to the first stop at WHERE:
 #   detMPs (default)  the first line inside the point loop, `mp` in scope
 #   any other name    gdb's `break NAME` (e.g. VMconst); `point` then shows
@@ -65,6 +67,6 @@ batch=() defaults=()
 own=" ${args[*]:-} "                           # the program refuses an option given twice
 [[ "$own" == *" --out "* ]] || defaults+=(--out "$root/build/debug/output/$setup")
 [[ "$own" == *" --vtk "* ]] || defaults+=(--vtk 0)
-exec gdb -q -nx "${batch[@]}" -x "$root/tools/gdb/eigen.py" -x "$root/tools/gdb/ample.gdb" \
+exec gdb -q -nx "${batch[@]}" -x "$root/tools/gdb/eigen.py" -x "$root/tools/gdb/skips.py" -x "$root/tools/gdb/ample.gdb" \
   -ex "set breakpoint pending on" -ex "break $where" -ex run "${cmds[@]}" \
   --args "$exe" "$setup" "${defaults[@]}" "${args[@]}"

@@ -1,7 +1,7 @@
 #--------------------------------------------------------------------------
 # count_steps.py — how many gdb `step`s from where we stand to a function
 #--------------------------------------------------------------------------
-# Loading it sets the skips below and defines one command:
+# Loading it sets the skips of skips.py and defines one command:
 #   count-steps FUNC [LIMIT]   repeat `step` from the current stop until the
 #                              selected frame is in FUNC (its name, or the last
 #                              part of a qualified name: Hooke3d matches
@@ -11,33 +11,16 @@
 #                              each with the times it was entered (the stops at
 #                              its first line) and the steps that stopped in
 #                              it; then the backtrace at the end.
-# Skipped when stepping (`step` passes over them, and over what they call):
-#   - every file under /usr/include: the standard library (/usr/include/c++/...)
-#     and Eigen (/usr/include/eigen3/...), as `skip -gfi /usr/include/*/...`
-#     for each depth from 1 to 8 (one `*` of gdb's file glob matches one
-#     folder or file name, never a '/': /usr/include/* alone skips only the
-#     files right in /usr/include);
-#   - any function whose name begins with std::, Eigen:: or __ (skip -rfu):
-#     instances of their templates in our own files, and the C library's math
-#     (exp, log: __GI___exp, __log, ... whose lines gdb shows when the
-#     package libc6-dbg is installed; __gnu_cxx:: too);
-# Functions without line information (libc without libc6-dbg, libstdc++.so)
-# are passed over as gdb always does; skipping __ passes over the C library's
-# math in the same way where libc6-dbg gives it lines. A function of ours
-# called only from skipped code (a lambda handed to std::sort or a
-# std::function) is passed over too.
+# Skipped when stepping: tools/gdb/skips.py (the standard library, Eigen, the C
+# library's maths), which this file loads and tools/debug.sh loads too.
 # Load: gdb -x tools/gdb/count_steps.py (tools/count_steps.sh does), or
 # `source tools/gdb/count_steps.py` in a running gdb.
 #--------------------------------------------------------------------------
+import os
+
 import gdb
 
-SKIP_FILES = ["/usr/include" + "/*" * depth for depth in range(1, 9)]
-SKIP_FUNCTIONS = [r"^std::", r"^Eigen::", r"^__"]
-
-for pattern in SKIP_FILES:
-    gdb.execute("skip -gfile %s" % pattern, to_string=True)
-for regex in SKIP_FUNCTIONS:
-    gdb.execute("skip -rfunction %s" % regex, to_string=True)
+gdb.execute("source %s" % os.path.join(os.path.dirname(os.path.abspath(__file__)), "skips.py"))
 
 
 def short(name):
