@@ -4,8 +4,8 @@
 // Eq 44: every circle R of the annulus Ri <= R <= Ro turns by
 //   theta(R) = alpha 16 (R - Ri)^2 (R - Ro)^2 / (Ri - Ro)^4,
 // x = Q(theta(R)) X. Its body force for Hencky elasticity in the updated
-// Lagrangian frame (b = -div_x sigma, derived in docs/annulus.md and
-// plotting/annulus_bodyforce.py): with gamma = R theta'(R),
+// Lagrangian frame (b = -div_x sigma, derived in plotting/annulus_bodyforce.py,
+// stated in docs/annulus.md): with gamma = R theta'(R),
 //   f = asinh(gamma/2) / sqrt(1 + gamma^2/4), sigma = 2G f [[-gamma/2, 1], [1, gamma/2]]
 // in (e_r, e_phi), b_r = G (f + gamma f') gamma' + 2G gamma f / R,
 // b_phi = -2G (f' gamma' + 2 f / R), at the reference position X (J = 1, so

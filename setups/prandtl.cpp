@@ -17,7 +17,7 @@
 // The footing load is the sum of the footing nodes' vertical reactions (an.frct),
 // twice that of the half model; q = load / B. Bilinear MPM locks for the isochoric
 // plastic flow of von Mises, so q/c_u comes out above 5.14 and falls with h
-// (docs/setups.md, "prandtl"; locking=Fbar is the remedy this setup measures).
+// (docs/locking.md, "The benchmarks": locking=Fbar is the remedy this setup measures).
 // E = 10 MPa and c_u = 10 kPa (E / c_u = 1000), nu = 0.3, small strain (SS), standard MPM
 // points (mpType=MPM) by default.
 // results: q_over_cu at the last step, its error (q/c_u) / (2 + pi) - 1, the peak
