@@ -143,6 +143,7 @@ TEST_SUITE("robustness") {
     Eigen::VectorXd applied = Eigen::VectorXd::Zero(an.mesh.nDoF());
     bool refuse = true;                                      // the first half fails once
     Hooks hooks;
+    hooks.detMPs = pointLoopOf(an.formulation);               // SS: ample/formulations/
     hooks.checkConverged = [&refuse](const Analysis& a, const Increment& inc, int NRit, double fErr,
                                      const Eigen::VectorXd& uvw, const Eigen::VectorXd& load) {
       if (refuse && inc.depth == 1 && inc.lf0 == 0.0) {

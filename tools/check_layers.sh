@@ -11,7 +11,7 @@
 #   3 core          ample/*.h ample/*.cpp (the loop, its hooks and the functions it calls:
 #                   elemMPinfo, detExtForce, detFDoFs, linSolve, detMPs, updateMPs)
 #   4 extensions    ample/solver/* ample/remedies/* ample/boundaries/* ample/fast/*
-#                   ample/domains/* ample/locking/* ample/initial/* (they may
+#                   ample/domains/* ample/locking/* ample/initial/* ample/formulations/* (they may
 #                   include the core, never the other way; ample/fast/, a core function
 #                   replaced as a whole for large runs, is included by ample/program/* only,
 #                   which chooses it)
@@ -30,7 +30,7 @@ layer() {  # layer of a project file, -1 for one outside the layered tree
     ample/mpData.h|ample/errors.h|ample/analysis.h|ample/boundaries/boundary.h|constitutive/*) echo 0 ;;
     ample/meshes/*|ample/stiffness/*) echo 1 ;;
     ample/basis/*) echo 2 ;;
-    ample/solver/*|ample/remedies/*|ample/boundaries/*|ample/fast/*|ample/domains/*|ample/locking/*|ample/initial/*) echo 4 ;;
+    ample/solver/*|ample/remedies/*|ample/boundaries/*|ample/fast/*|ample/domains/*|ample/locking/*|ample/initial/*|ample/formulations/*) echo 4 ;;
     ample/program/*) echo 7 ;;
     ample/*/*) echo -1 ;;   # a folder of ample/ without a layer
     ample/*) echo 3 ;;

@@ -34,6 +34,7 @@
 #include "ample/domains/updateDomain.h"
 #include "ample/errors.h"
 #include "ample/fast/fastFrom.h"
+#include "ample/formulations/detMPsForm.h"
 #include "ample/initial/geostatic.h"
 #include "ample/locking/detMPsFbar.h"
 #include "ample/meshes/cellSearch.h"
@@ -134,7 +135,7 @@ static Hooks runHooks(Analysis& an, RunLog& log, const RunOptions& opt, RunState
   const bool large = false;        // a Debug build, to step through: the core's loops at every size
 #endif
   const BasisLoop basisLoop = large ? opt.basisLoop : elemMPinfo;
-  const PointLoop pointLoop = large ? opt.pointLoop : PointLoop(detMPs);
+  const PointLoop pointLoop = large ? opt.pointLoop : pointLoopOf(an.formulation);  // UL: detMPs
   x.Kff.choice = an.solver;                                          // SparseLU, or LDLT if symmetric
   const bool chosen = large || an.solver != LinearSolver::LU;
   h.startStep = [&log, &opt](Analysis& a, const Increment& inc) { startStep(a, inc.lstp, log, opt.quiet); };
