@@ -99,8 +99,7 @@ PointTerms smallStrainPoint(const Matrix3d& H, MaterialPoint& mp) {  // H = grad
 }  // namespace
 
 //--------------------------------------------------------------------------
-// addPoint — f_p (eq 16) and k_p (eq 14) of one point, added into fint and the
-// values Kval of Kt's pattern (eqs 30-31)
+// addPoint — f_p (eq 16) of one point added into fint, and its k_p (eq 14) in ke
 //--------------------------------------------------------------------------
 // k_ab,ik = sum_jl dS_a/dx_j A_ijkl dS_b/dx_l V_p (eq 14) with the products
 // g_jkl = dS_a/dx_j A_ijkl formed once per node a and direction i, not per b: half

@@ -1,5 +1,5 @@
 //--------------------------------------------------------------------------
-// detMPsFast — detMPs for large runs: the same numbers, faster
+// detMPsFast — the point loop of an optimised build: the same equations, faster
 //--------------------------------------------------------------------------
 // See detMPsFast.h.
 //--------------------------------------------------------------------------

@@ -23,6 +23,7 @@ using StrainDisplacement = Eigen::Matrix<double, 4, Eigen::Dynamic, 0, 4, nD * M
 struct StartTerms {            // a point's terms of eqs 14 and 16 on the step's start configuration
   Eigen::Matrix4d A;           // tangent, (i,j) -> 2i+j
   Eigen::Vector4d S;           // the stress paired with dS/dX~, S_ij at 2i+j
+  double V;                    // the volume
 };
 
 ConstOut constitutive(const Vector6d& epsEtr, const MaterialPoint& mp) {  // cmType 1 or 2
@@ -40,7 +41,8 @@ StartTerms previouslyConverged(const Matrix3d& dF, MaterialPoint& mp) {
   const double Jn = mp.Fn.determinant();
   const Matrix3d tau = stressToTensor(cm.Ksig);
   const Matrix3d P = tau * dF.inverse().transpose() / Jn;                               // P~, eq 18
-  return {formPCstiff2D(dF, Jn, cm.D, tau, bEn, bEtr), P.topLeftCorner<2, 2>().reshaped<Eigen::RowMajor>()};
+  return {formPCstiff2D(dF, Jn, cm.D, tau, bEn, bEtr), P.topLeftCorner<2, 2>().reshaped<Eigen::RowMajor>(),
+          mp.vp};                                               // V_p^n
 }
 
 // SS ([Boundaries] eqs 2-3, 10): eps = eps_n + sym(grad du), sigma from the model, A = D
@@ -51,7 +53,8 @@ StartTerms smallStrain(const Eigen::Matrix2d& H, MaterialPoint& mp) {
   mp.F = Matrix3d::Identity();
   mp.epsE = cm.epsE;
   mp.sig = cm.Ksig;                                                                      // Cauchy stress
-  return {elasticBlock2D(cm.D), stressToTensor(mp.sig).topLeftCorner<2, 2>().reshaped<Eigen::RowMajor>()};
+  return {elasticBlock2D(cm.D), stressToTensor(mp.sig).topLeftCorner<2, 2>().reshaped<Eigen::RowMajor>(),
+          mp.vp};                                               // V_p = V_p0
 }
 
 }  // namespace
@@ -72,8 +75,8 @@ void detMPsForm(const Eigen::VectorXd& uvw, std::vector<MaterialPoint>& mpData, 
     const StartTerms t = form == Formulation::PC ? previouslyConverged(dF, mp) : smallStrain(H, mp);
     StrainDisplacement G = StrainDisplacement::Zero(4, ne);     // of dS/dX~: G(2k+l, 2b+k) = dS_b/dX_l
     for (int b = 0; b < mp.nn; ++b) G.block<2, 1>(0, nD * b) = G.block<2, 1>(2, nD * b + 1) = mp.dSvp.col(b);
-    const PointMatrix kp = mp.vp * G.transpose() * t.A * G;     // k_p on the step's start (eq 14)
-    out.fint(ed) += mp.vp * G.transpose() * t.S;                // f_p on the step's start (eq 16), eq 31
+    const PointMatrix kp = t.V * G.transpose() * t.A * G;       // k_p on the step's start (eq 14)
+    out.fint(ed) += t.V * G.transpose() * t.S;                  // f_p on the step's start (eq 16), eq 31
     for (int c = 0; c < ne; ++c)                                // Kt (eq 30)
       for (int r = 0; r < ne; ++r) Kt.emplace_back(ed(r), ed(c), kp(r, c));
   }
