@@ -31,8 +31,8 @@ void detMPs(const Eigen::VectorXd& uvw, std::vector<MaterialPoint>& mpData, Form
     MaterialPoint& mp = mpData[p];                              // the point (gdb: p mp)
     PointDofs ed(nD * mp.nn);                                   // its dofs: node v's are 2 v, 2 v + 1
     for (int a = 0; a < ed.size(); ++a) ed(a) = nD * mp.nIN[a / nD] + a % nD;
-    Matrix3d dF = Matrix3d::Identity();                         // plane strain: dF_zz = 1
-    dF.topLeftCorner<2, 2>() += uvw(ed).reshaped(nD, mp.nn) * mp.dSvp.leftCols(mp.nn).transpose();  // eq 17
+    Matrix3d dF = Matrix3d::Identity();                         // eq 17: dF = I + sum_v du_v (x) dS_v/dX~
+    for (int v = 0; v < mp.nn; ++v) dF.topLeftCorner<2, 2>() += uvw.segment<nD>(nD * mp.nIN[v]) * mp.dSvp.col(v).transpose();
     mp.F = dF * mp.Fn;                                                                     // eq 7
     const Matrix3d bEtr = dF * symExp(2.0 * strainToTensor(mp.epsEn)) * dF.transpose();   // eqs 8-9
     const Vector6d epsEtr = tensorToStrain(0.5 * symLog(bEtr));                           // eq 10

@@ -69,7 +69,8 @@ void detMPsForm(const Eigen::VectorXd& uvw, std::vector<MaterialPoint>& mpData, 
     const int ne = nD * mp.nn;
     PointDofs ed(ne);                                           // its dofs: node v's are 2 v, 2 v + 1
     for (int a = 0; a < ne; ++a) ed(a) = nD * mp.nIN[a / nD] + a % nD;
-    const Eigen::Matrix2d H = uvw(ed).reshaped(nD, mp.nn) * mp.dSvp.leftCols(mp.nn).transpose();  // grad du
+    Eigen::Matrix2d H = Eigen::Matrix2d::Zero();               // grad du = sum_v du_v (x) dS_v/dX~
+    for (int v = 0; v < mp.nn; ++v) H += uvw.segment<nD>(nD * mp.nIN[v]) * mp.dSvp.col(v).transpose();
     Matrix3d dF = Matrix3d::Identity();
     dF.topLeftCorner<2, 2>() += H;                                                          // eq 17
     const StartTerms t = form == Formulation::PC ? previouslyConverged(dF, mp) : smallStrain(H, mp);
