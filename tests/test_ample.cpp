@@ -372,15 +372,22 @@ TEST_SUITE("ample") {
   TEST_CASE("solve: each hook is called in its phase, in fig 4's order, once per pass or step") {
     const Setup* s = findSetup("compaction");
     Analysis an = s->setupGrid(s->params());
+    struct Recorder : Hooks {                                        // each hook marks its call
+      std::string& calls;
+      long& passes;
+      Recorder(std::string& c, long& p) : calls(c), passes(p) {}
+      void startStep(Analysis&, const Increment& inc) const override { calls += "S" + std::to_string(inc.lstp); }
+      void stepTerms(Analysis&, const Increment&, Eigen::VectorXd&) const override { calls += "t"; }
+      void passTerms(const Eigen::VectorXd&, DetMPsOut&, Eigen::VectorXd&) const override { calls += "p"; }
+      void afterPass(const Analysis&, const Increment&, int NRit, double) const override {
+        calls += std::to_string(NRit), passes++;
+      }
+      void afterUpdate(Analysis&, const Increment&, int, double) const override { calls += "u"; }
+      void endStep(Analysis&, const Increment&) const override { calls += "E"; }
+    };
     std::string calls;
     long passes = 0;
-    Hooks h;
-    h.startStep = [&](Analysis&, const Increment& inc) { calls += "S" + std::to_string(inc.lstp); };
-    h.stepTerms = [&](Analysis&, const Increment&, Eigen::VectorXd&) { calls += "t"; };
-    h.passTerms = [&](const Eigen::VectorXd&, DetMPsOut&, Eigen::VectorXd&) { calls += "p"; };
-    h.afterPass = [&](const Analysis&, const Increment&, int NRit, double) { calls += std::to_string(NRit), passes++; };
-    h.afterUpdate = [&](Analysis&, const Increment&, int, double) { calls += "u"; };
-    h.endStep = [&](Analysis&, const Increment&) { calls += "E"; };
+    const Recorder h(calls, passes);
     solve(an, h);
     // S1 t (p pass)... u E S2 t (p pass)... u E: passes 0, 1, ... of each step in turn
     CHECK(calls.substr(0, 7) == "S1tp0p1");

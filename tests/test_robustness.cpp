@@ -142,22 +142,28 @@ TEST_SUITE("robustness") {
     std::vector<Done> done;
     Eigen::VectorXd applied = Eigen::VectorXd::Zero(an.mesh.nDoF());
     bool refuse = true;                                      // the first half fails once
-    Hooks hooks;
-    hooks.checkConverged = [&refuse](const Analysis& a, const Increment& inc, int NRit, double fErr,
-                                     const Eigen::VectorXd& uvw, const Eigen::VectorXd& load) {
-      if (refuse && inc.depth == 1 && inc.lf0 == 0.0) {
-        refuse = false;
-        throw NewtonFailure("the first half refused by the test", Failure::NotConverged);
+    struct Halves : Hooks {                                  // the squeeze's halves, the first refused once
+      bool& refuse;
+      std::vector<Done>& done;
+      Eigen::VectorXd& applied;
+      Halves(bool& r, std::vector<Done>& d, Eigen::VectorXd& a) : refuse(r), done(d), applied(a) {}
+      void checkConverged(const Analysis& a, const Increment& inc, int NRit, double fErr,
+                          const Eigen::VectorXd& uvw, const Eigen::VectorXd& load) const override {
+        if (refuse && inc.depth == 1 && inc.lf0 == 0.0) {
+          refuse = false;
+          throw NewtonFailure("the first half refused by the test", Failure::NotConverged);
+        }
+        ample::checkConverged(a, inc, NRit, fErr, uvw, load);
       }
-      checkConverged(a, inc, NRit, fErr, uvw, load);
+      void afterUpdate(Analysis& a, const Increment& inc, int, double) const override {
+        done.push_back({inc.lf0, inc.lf1, inc.share, inc.depth});
+        applied += a.uvw;
+      }
+      void failedStep(Analysis& a, const Increment& inc, const RunError& e) const override {
+        retryStep(a, inc, e, *this, true);
+      }
     };
-    hooks.afterUpdate = [&](Analysis& a, const Increment& inc, int, double) {
-      done.push_back({inc.lf0, inc.lf1, inc.share, inc.depth});
-      applied += a.uvw;
-    };
-    hooks.failedStep = [](Analysis& a, const Increment& inc, const RunError& e, const Hooks& h) {
-      retryStep(a, inc, e, h, true);
-    };
+    const Halves hooks(refuse, done, applied);
     retryStep(an, {1, 0.0, 0.25, 1.0, 0, ""}, NewtonFailure("the whole step refused by the test", Failure::NotConverged),
               hooks, true);
     REQUIRE(done.size() == 3);                               // two quarters, then the second half

@@ -314,9 +314,12 @@ TEST_SUITE("updateDomain") {
     updateDomain(mesh, uvw, DomainUpdate::Corner, direct);
     CHECK((direct.lp - lExpected).norm() <= tolOK);
 
-    updateMPs(mesh, uvw, mpData, [](const Mesh& g, const Eigen::VectorXd& u, MaterialPoint& p) {
-      updateDomain(g, u, DomainUpdate::Corner, p);              // the program's hook
-    });
+    struct Corner : UpdateDomain {                              // the program's hook
+      void updateDomain(const Mesh& g, const Eigen::VectorXd& u, MaterialPoint& p) const override {
+        ample::updateDomain(g, u, DomainUpdate::Corner, p);
+      }
+    };
+    updateMPs(mesh, uvw, mpData, Corner());
     CHECK((mpData[0].lp - lExpected).norm() <= tolOK);
   }
 }
