@@ -78,7 +78,7 @@ void checkConverged(const Analysis& an, const Increment& inc, int NRit, double f
 
 // an analysis that asks for an extension (a setup's beforeStep or afterStep, a body force,
 // the finite element mode, implicit boundaries, a remedy, CPDI points or another domain
-// update) runs only with the program's hooks (solveRun, ample/program/run.h): refused
+// update) runs only with the program's hooks (solveRun, setups/program/run.h): refused
 // here, not solved wrongly without them
 static void checkHooks(const Analysis& an, const Hooks& hooks) {
   bool needs = an.beforeStep || an.afterStep || an.bodyForce || an.fem || !an.boundaries.empty() ||

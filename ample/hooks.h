@@ -3,7 +3,7 @@
 //--------------------------------------------------------------------------
 // A plain run's hooks are the core functions and empty hooks (the defaults
 // below), and solve() is then [AMPLE] fig 4. The program derives its own
-// (RunHooks, ample/program/run.cpp) with what the setup and its parameters
+// (RunHooks, setups/program/run.cpp) with what the setup and its parameters
 // ask for: the fast loops of large runs, the other solvers, the remedies, the
 // implicit boundaries, the finite element mode, progress, the log and its timers.
 // Each hook is a virtual function, so that gdb's `step` at its call enters it

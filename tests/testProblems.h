@@ -1,6 +1,6 @@
 // testProblems.h — small problems built in code for the tests (not a test file itself)
 #pragma once
-#include "ample/program/run.h"
+#include "setups/program/run.h"
 #include "ample/detMPs.h"
 #include "ample/elemMPinfo.h"
 #include "ample/meshes/formCoord2D.h"

@@ -1,7 +1,7 @@
 // Tests of the main loop (ample.cpp) on the paper's problems: Newton-Raphson
 // convergence order, compaction convergence with refinement, collapse extents
 // of [AMPLE] table 5, and a patch test through the whole loop.
-#include "ample/program/run.h"
+#include "setups/program/run.h"
 #include "testProblems.h"
 #include <doctest/doctest.h>
 #include <algorithm>

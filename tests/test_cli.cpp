@@ -1,6 +1,6 @@
 // Tests of the command line (cli.cpp, main.cpp): parameters parsed and
 // checked, bad input refused with exit status 2 and no output written.
-#include "ample/program/cli.h"
+#include "setups/program/cli.h"
 #include "ample/errors.h"
 #include "setups/setups.h"
 #include <doctest/doctest.h>

@@ -4,7 +4,7 @@
 // against central differences of the PC internal force. PC and UL describe the
 // same equilibrium in two frames, so their internal forces (and hence their
 // tangents) agree for the same increment.
-#include "ample/program/run.h"
+#include "setups/program/run.h"
 #include "ample/detFDoFs.h"
 #include "ample/remedies/loneNodes.h"
 #include "ample/detMPs.h"

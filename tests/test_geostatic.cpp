@@ -8,7 +8,7 @@
 // parameter: no gravity, a von Mises point beyond yield (K0 and the range this body allows).
 #include "ample/errors.h"
 #include "ample/initial/geostatic.h"
-#include "ample/program/run.h"
+#include "setups/program/run.h"
 #include "constitutive/Hooke3d.h"
 #include "testProblems.h"
 #include <doctest/doctest.h>

@@ -5,7 +5,7 @@
 // against the uniform stress. Expected values are built here, not from the library.
 #include "ample/meshes/formCoord2D.h"
 #include "ample/boundaries/ibStiffness.h"
-#include "ample/program/run.h"
+#include "setups/program/run.h"
 #include "setups/setupHelpers.h"
 #include "setups/setups.h"
 #include <doctest/doctest.h>

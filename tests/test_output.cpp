@@ -1,6 +1,6 @@
 // Tests of the output (postPro, makeVtk, makeVtkMP, makeVtkWriter, writeOutput): files
 // written by a short run are read back and compared with the state in memory.
-#include "ample/program/run.h"
+#include "setups/program/run.h"
 #include "testProblems.h"
 #include <doctest/doctest.h>
 #include <algorithm>

@@ -1,6 +1,6 @@
 // Tests of the failure paths of the main loop: a NaN names the load step, the
 // pass and the first bad point; a failed load step can be rescued by sub-division.
-#include "ample/program/run.h"
+#include "setups/program/run.h"
 #include "ample/errors.h"
 #include "ample/meshes/formCoord2D.h"
 #include "ample/remedies/ghostPenalty.h"

@@ -2,7 +2,7 @@
 // it (checkConverged in ample/ample.cpp): the formula against a hand computation, the
 // estimate against the measured stalls of a compaction column driven to tol = 1e-16, its
 // growth n^1.5 along the column, and the tol that the message suggests passing when re-run.
-#include "ample/program/run.h"
+#include "setups/program/run.h"
 #include "ample/errors.h"
 #include "ample/solver/roundOffFloor.h"
 #include "setups/setups.h"

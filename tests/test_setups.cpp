@@ -1,7 +1,7 @@
 // Tests of the setups' reported results against values that share no code with them
 // the compaction error of eq 37 and the analytic stress of eq 36
 // (setups/compaction.cpp results()), by hand and by an independent calculation.
-#include "ample/program/run.h"
+#include "setups/program/run.h"
 #include "testProblems.h"
 #include <doctest/doctest.h>
 #include <cmath>

@@ -4,7 +4,7 @@
 // updateMPs and restoreConverged, one Newton pass on a linear problem, the approach to
 // UL as the load goes to zero, and the compaction column against [AMPLE] eq 36.
 // The expected stresses are written here from Lame constants (not with Hooke3d).
-#include "ample/program/run.h"
+#include "setups/program/run.h"
 #include "ample/detMPs.h"
 #include "ample/remedies/loadSteps.h"
 #include "ample/updateMPs.h"

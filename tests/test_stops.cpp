@@ -2,7 +2,7 @@
 // writeOutput.cpp, the setups' results): every exit path leaves complete, valid output, a
 // figure that is undefined is null with its reason, and each stop message names a remedy
 // that, followed, completes the run.
-#include "ample/program/run.h"
+#include "setups/program/run.h"
 #include "ample/errors.h"
 #include "ample/remedies/loadSteps.h"
 #include "setups/setupHelpers.h"

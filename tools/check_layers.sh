@@ -13,11 +13,13 @@
 #   4 extensions    ample/solver/* ample/remedies/* ample/boundaries/* ample/fast/*
 #                   ample/domains/* ample/locking/* ample/initial/* (they may
 #                   include the core, never the other way; ample/fast/, a core function
-#                   replaced as a whole for large runs, is included by ample/program/* only,
+#                   replaced as a whole for large runs, is included by setups/program/* only,
 #                   which chooses it)
-#   5 setups        setups/*
-#   6 output        plotting/*
-#   7 program       ample/program/* (the command line, the run and its hooks)
+#   5 output        plotting/*  (postPro and the VTK writers; the scripts that draw a run)
+#   6 setups        setups/*
+#   7 program       setups/program/* (the command line, the run and its hooks, its output files)
+# so that between the top-level folders every include runs one way: constitutive/ <- ample/
+# <- plotting/ <- setups/ (whose program/ joins them)
 # and no two modules (a .h/.cpp pair) include each other, directly or round a
 # cycle (checked with tsort over the module graph). Prints every offending
 # include; exit 0 when there is none, 1 otherwise.
@@ -31,11 +33,11 @@ layer() {  # layer of a project file, -1 for one outside the layered tree
     ample/meshes/*|ample/stiffness/*) echo 1 ;;
     ample/basis/*) echo 2 ;;
     ample/solver/*|ample/remedies/*|ample/boundaries/*|ample/fast/*|ample/domains/*|ample/locking/*|ample/initial/*) echo 4 ;;
-    ample/program/*) echo 7 ;;
+    setups/program/*) echo 7 ;;
     ample/*/*) echo -1 ;;   # a folder of ample/ without a layer
     ample/*) echo 3 ;;
-    setups/*) echo 5 ;;
-    plotting/*) echo 6 ;;
+    setups/*) echo 6 ;;
+    plotting/*) echo 5 ;;
     *) echo -1 ;;
   esac
 }
@@ -43,7 +45,7 @@ layer() {  # layer of a project file, -1 for one outside the layered tree
 bad=0
 edges=$(mktemp)
 trap 'rm -f "$edges"' EXIT
-for f in ample/* ample/*/* constitutive/* setups/* plotting/*; do
+for f in ample/* ample/*/* constitutive/* setups/* setups/*/* plotting/*; do
   case "$f" in *.h|*.cpp) ;; *) continue ;; esac
   lf=$(layer "$f")
   while IFS= read -r inc; do
@@ -57,7 +59,7 @@ for f in ample/* ample/*/* constitutive/* setups/* plotting/*; do
       echo "$f (layer $lf) includes $t (layer $lt): an include up a layer"; bad=1
     fi
     case "$t" in ample/fast/*)   # an extension: only the program (and its own room) chooses it
-      case "$f" in ample/fast/*|ample/program/*) ;; *) echo "$f includes $t: the core includes no extension (ample/fast/ is chosen by ample/program/)"; bad=1 ;; esac
+      case "$f" in ample/fast/*|setups/program/*) ;; *) echo "$f includes $t: the core includes no extension (ample/fast/ is chosen by setups/program/)"; bad=1 ;; esac
     esac
     case "$f" in constitutive/*)
       case "$t" in constitutive/*) ;; *) echo "$f includes $t: constitutive/ must stand alone"; bad=1 ;; esac

@@ -30,7 +30,7 @@
 //          SuiteSparse cases, with a last column ordering_chosen)
 // Build:   cmake --build --preset release --target solver_bench
 //--------------------------------------------------------------------------
-#include "ample/program/cli.h"
+#include "setups/program/cli.h"
 #include "ample/detFDoFs.h"
 #include "ample/remedies/loneNodes.h"
 #include "ample/detMPs.h"

@@ -13,7 +13,7 @@
 #     instances of their templates in our own files, and the C library's math
 #     (exp, log: __GI___exp, __log, ... whose lines gdb shows when the
 #     package libc6-dbg is installed; __gnu_cxx:: too);
-#   - the program's timers (ample::Stopwatch, ample::ScopedTimer, plotting/runLog.h),
+#   - the program's timers (ample::Stopwatch, ample::ScopedTimer, setups/program/runLog.h),
 #     which each of the program's hooks starts before it calls its core function.
 # Functions without line information (libc without libc6-dbg, libstdc++.so)
 # are passed over as gdb always does. A function of ours called only from

@@ -16,7 +16,7 @@
 #pragma once
 #include "ample/ample.h"
 #include "plotting/makeVtkWriter.h"
-#include "plotting/runLog.h"
+#include "runLog.h"
 #include "setups/setups.h"
 #include <string>
 

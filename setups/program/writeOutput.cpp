@@ -5,7 +5,7 @@
 //--------------------------------------------------------------------------
 #include "writeOutput.h"
 #include "ample/errors.h"
-#include "makeVtk.h"
+#include "plotting/makeVtk.h"
 #include <algorithm>
 #include <cerrno>
 #include <cmath>

@@ -16,7 +16,7 @@
 // Tests:   tests/test_cli.cpp
 //--------------------------------------------------------------------------
 #pragma once
-#include "ample/program/run.h"
+#include "setups/program/run.h"
 #include <string>
 #include <vector>
 

@@ -45,7 +45,7 @@
 #include "ample/solver/roundOffFloor.h"
 #include "ample/updateMPs.h"
 #include "plotting/postPro.h"
-#include "plotting/writeOutput.h"
+#include "writeOutput.h"
 #include <algorithm>
 #include <cfloat>
 #include <cmath>
