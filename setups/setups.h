@@ -29,7 +29,8 @@ namespace ample {
 //   param(P, "a", p.a).integer(1, 64).help("grid refinement: h = 0.5 m / a")
 //   param(P, "E", p.E).above(0).help("Young's modulus (Pa)")          // (0, inf)
 //   param(P, "mpType", p.mpType).choice(1, {"MPM", "GIMP", "CPDI1", "CPDI2"})
-// Without bounds a parameter takes any finite number.
+// Without bounds a parameter takes any finite number. Its kind: a number, a whole number
+// (isInteger) or a choice (names).
 struct Param {
   std::string name;
   double lo = -INFINITY, hi = INFINITY;   // valid range

@@ -348,6 +348,34 @@ TEST_SUITE("cli") {
     CHECK(runBinary("--help extra") == 2);
   }
 
+  TEST_CASE("cli: each parameter of every setup sets a member of its own, and a fresh table has the defaults") {
+    for (const Setup& s : setupsTable()) {
+      const std::string setup = s.name;
+      CAPTURE(setup);
+      Params P = s.params();
+      std::vector<double> before;
+      for (const Param& p : P) before.push_back(p.value());
+      for (size_t k = 0; k < P.size(); ++k) {
+        const Param& p = P[k];
+        CAPTURE(p.name);
+        if (p.lo == p.hi) continue;  // one value allowed (e.g. lstps of the one-step setups)
+        const double d = before[k];  // another valid value: one step (whole) or half way to a bound
+        const double v = p.isInteger ? (d + 1 <= p.hi ? d + 1 : d - 1)
+                                     : d < p.hi && std::isfinite(p.hi) ? 0.5 * (d + p.hi)
+                                                                       : 0.5 * (d + p.lo);
+        REQUIRE(inside(p, v));
+        REQUIRE(v != d);
+        p.set(v);
+        CHECK(p.value() == v);
+        for (size_t j = 0; j < P.size(); ++j)
+          if (j != k && P[j].value() != before[j]) FAIL_CHECK(P[j].name << " moved with " << p.name);
+        p.set(d);
+      }
+      const Params fresh = s.params();
+      for (size_t k = 0; k < P.size(); ++k) CHECK(fresh[k].value() == before[k]);
+    }
+  }
+
   TEST_CASE("cli: a choice's name is read in any case, an unknown one lists the names and numbers") {
     for (const std::string name : {"gimp", "GIMP", "Gimp", "gImP"}) {
       CAPTURE(name);
