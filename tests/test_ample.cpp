@@ -17,7 +17,7 @@ double result(const std::string& name, const Analysis& an,
               const std::vector<std::pair<std::string, double>>& set, const std::string& key) {
   const Setup* s = findSetup(name);
   Params P = s->params();
-  for (const auto& kv : set) setDefault(P, kv.first, kv.second);
+  for (const auto& kv : set) setParam(P, kv.first, kv.second);
   for (const auto& r : s->results(an, P))
     if (r.first == key) return r.second;
   FAIL("no result " << key);
@@ -263,7 +263,7 @@ TEST_SUITE("ample") {
   TEST_CASE("ample: collapse 6x6 at h = 1 m reproduces the load step 10 residuals of [Lagrangian] table 8") {
     const Setup* s = findSetup("collapse");
     Params P = s->params();
-    setDefault(P, "mp", 6);
+    setParam(P, "mp", 6);
     Analysis an = s->setupGrid(P);
     RunLog log;
     solveRun(an, log, RunOptions{"", 0, true, 10});
@@ -355,7 +355,7 @@ TEST_SUITE("ample") {
   TEST_CASE("solve: a load step that does not converge throws NewtonFailure naming the step and fErr (core, no hooks)") {
     const Setup* s = findSetup("collapse");
     Params P = s->params();
-    setDefault(P, "NRitMax", 3);                                     // too few passes for the plastic steps
+    setParam(P, "NRitMax", 3);                                     // too few passes for the plastic steps
     Analysis an = s->setupGrid(P);
     std::string what;
     try {

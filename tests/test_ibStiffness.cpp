@@ -72,8 +72,8 @@ Analysis block(double theta, bool nodal, RunLog& log, int ibK2 = 0) {
   const Setup* s = findSetup("ibblock");
   REQUIRE(s != nullptr);
   Params P = s->params();
-  setDefault(P, "theta", theta);
-  setDefault(P, "ibK2", ibK2);
+  setParam(P, "theta", theta);
+  setParam(P, "ibK2", ibK2);
   Analysis an = s->setupGrid(P);
   if (nodal) {  // the same points, the rollers as nodal conditions on the grid lines
     an.boundaries.clear();
@@ -258,8 +258,8 @@ TEST_SUITE("ibStiffness") {
     for (double dh : {1e-4, 1e-5}) {
       const Setup* s = findSetup("ibblock");
       Params P = s->params();
-      setDefault(P, "delta", dh);
-      setDefault(P, "ibK2", 0);
+      setParam(P, "delta", dh);
+      setParam(P, "ibK2", 0);
       RunLog log;
       Analysis an = s->setupGrid(P);
       solveRun(an, log);
@@ -275,7 +275,7 @@ TEST_SUITE("ibStiffness") {
     for (double th : {0.0, 30.0, 45.0, 90.0}) {
       RunLog log;
       Params P = s->params();
-      setDefault(P, "theta", th);
+      setParam(P, "theta", th);
       Analysis an = s->setupGrid(P);
       solveRun(an, log);
       REQUIRE(log.converged);
@@ -300,8 +300,8 @@ TEST_SUITE("ibStiffness") {
     // PrescribedNormal); the four sum to zero (no body force)
     const Setup* s = findSetup("ibblock");
     Params P = s->params();
-    setDefault(P, "theta", 30);
-    setDefault(P, "ibK2", 1);
+    setParam(P, "theta", 30);
+    setParam(P, "ibK2", 1);
     Analysis an = s->setupGrid(P);
     const std::vector<Boundary> b0 = an.boundaries;
     RunLog log;
@@ -326,7 +326,7 @@ TEST_SUITE("ibStiffness") {
     // side, so the answer is the same uniform stress; the side moves by du after the step
     const Setup* s = findSetup("ibblock");
     Params P = s->params();
-    setDefault(P, "theta", 30);
+    setParam(P, "theta", 30);
     Analysis an = s->setupGrid(P);
     REQUIRE(an.boundaries.size() == 4);
     an.boundaries[1].type[0] = BoundaryType::Prescribed;

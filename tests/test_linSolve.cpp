@@ -382,7 +382,7 @@ TEST_SUITE("linSolve") {
       const std::string option = choice == LinearSolver::MUMPS ? "-DAMPLE_MUMPS=ON" : "-DAMPLE_PETSC=ON";
       CAPTURE(name);
       Params P = s->params();
-      setDefault(P, "solver", int(choice));
+      setParam(P, "solver", int(choice));
       std::string message;
       try {
         s->setupGrid(P);

@@ -24,9 +24,11 @@ namespace {
 // with domains from 0.3 to 1.2 of their original half-lengths: every point links
 // its own set of 4 to 16 nodes; every 7th point is CPDI2 with skewed corners
 std::vector<MaterialPoint> scatteredPoints(const Mesh& mesh) {
-  Params P = commonParams(1);
-  for (auto kv : std::vector<std::pair<const char*, double>>{{"mp", 4}, {"mpType", 2}, {"E", 1e6}, {"nu", 0.3}})
-    setDefault(P, kv.first, kv.second);
+  Common P;
+  P.mp = 4;
+  P.mpType = MpType::GIMP;
+  P.E = 1e6;
+  P.nu = 0.3;
   std::vector<MaterialPoint> mpData;
   fillBlock(mpData, Vector2d(2, 2), 16, 16, mesh.h, P, 1000.0);
   std::mt19937 gen(11);

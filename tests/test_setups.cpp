@@ -14,7 +14,7 @@ Analysis compaction(const std::vector<std::pair<std::string, double>>& set, Para
   const Setup* s = findSetup("compaction");
   REQUIRE(s != nullptr);
   P = s->params();
-  for (const auto& kv : set) setDefault(P, kv.first, kv.second);
+  for (const auto& kv : set) setParam(P, kv.first, kv.second);
   Analysis an = s->setupGrid(P);
   RunLog log;
   solveRun(an, log);

@@ -314,7 +314,7 @@ static void startStep(Analysis& an, int lstp, RunLog& log, bool quiet) {
 static SpMat ghostPenaltyOf(const Analysis& an) {
   if (!(an.ghost > 0) || an.ghostFrom == 0) return SpMat();
   double E = 0.0;                                                 // the stiffest point's E
-  for (const MaterialPoint& mp : an.mpData) E = std::max(E, mp.mCst(0));
+  for (const MaterialPoint& mp : an.mpData) E = std::max(E, mp.mCst.E);
   return ghostPenalty(an.mesh, an.ghost, E);
 }
 
