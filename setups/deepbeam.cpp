@@ -36,7 +36,7 @@
 #include "ample/detMPs.h"
 #include "ample/elemMPinfo.h"
 #include "ample/errors.h"
-#include "ample/meshes/formCoord2D.h"
+#include "formCoord2D.h"
 #include "ample/linSolve.h"
 #include "setupHelpers.h"
 #include <cmath>

@@ -19,7 +19,7 @@
 // Tests:   tests/test_ibStiffness.cpp
 //--------------------------------------------------------------------------
 #include "ample/errors.h"
-#include "ample/meshes/formCoord2D.h"
+#include "formCoord2D.h"
 #include "setupHelpers.h"
 #include <cmath>
 

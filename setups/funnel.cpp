@@ -23,7 +23,7 @@
 //          results: the same at the last step
 // Tests:   tests/test_ibMoving.cpp
 //--------------------------------------------------------------------------
-#include "ample/meshes/formCoord2D.h"
+#include "formCoord2D.h"
 #include "setupHelpers.h"
 #include <cmath>
 

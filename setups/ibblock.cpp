@@ -18,7 +18,7 @@
 //          sxx_mean (MPa), points
 // Tests:   tests/test_ibStiffness.cpp
 //--------------------------------------------------------------------------
-#include "ample/meshes/formCoord2D.h"
+#include "formCoord2D.h"
 #include "setupHelpers.h"
 #include <cmath>
 

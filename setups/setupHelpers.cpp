@@ -4,10 +4,10 @@
 // See setupHelpers.h for inputs and outputs.
 //--------------------------------------------------------------------------
 #include "setupHelpers.h"
-#include "ample/meshes/detMpPos.h"
+#include "detMpPos.h"
 #include "ample/errors.h"
 #include "ample/solver/solverChoice.h"
-#include "ample/meshes/shapefunc.h"
+#include "shapefunc.h"
 #include <algorithm>
 #include <cmath>
 #include <cstdio>

@@ -26,7 +26,7 @@
 // Tests:   tests/test_ample.cpp (against closed forms written in the test)
 //--------------------------------------------------------------------------
 #include "ample/elemMPinfo.h"
-#include "ample/meshes/formCoord2D.h"
+#include "formCoord2D.h"
 #include "homogeneous.h"
 #include "setupHelpers.h"
 #include <cmath>

@@ -8,7 +8,7 @@
 #include "ample/boundaries/cutCells.h"
 #include "ample/boundaries/dirichletBand.h"
 #include "ample/errors.h"
-#include "ample/meshes/formCoord2D.h"
+#include "setups/formCoord2D.h"
 #include "setups/setupHelpers.h"
 #include "setups/setups.h"
 #include <doctest/doctest.h>

@@ -7,7 +7,7 @@
 #include "ample/basis/SvpCPDI.h"
 #include "ample/basis/domainCorners.h"
 #include "ample/elemMPinfo.h"
-#include "ample/meshes/formCoord2D.h"
+#include "setups/formCoord2D.h"
 #include <doctest/doctest.h>
 #include <algorithm>
 #include <cmath>

@@ -8,7 +8,7 @@
 #include "ample/detFDoFs.h"
 #include "ample/remedies/loneNodes.h"
 #include "ample/detMPs.h"
-#include "ample/meshes/formCoord2D.h"
+#include "setups/formCoord2D.h"
 #include "testProblems.h"
 #include <doctest/doctest.h>
 #ifdef _OPENMP

@@ -3,7 +3,7 @@
 // inclined roller against the aligned one (eqs 23-24) in rotated axes (eq 25), and the
 // setup ibblock (sec 5.1) against the grid-aligned solution with nodal rollers and
 // against the uniform stress. Expected values are built here, not from the library.
-#include "ample/meshes/formCoord2D.h"
+#include "setups/formCoord2D.h"
 #include "ample/boundaries/ibStiffness.h"
 #include "ample/program/run.h"
 #include "setups/setupHelpers.h"

@@ -5,7 +5,7 @@
 #include "ample/elemMPinfo.h"
 #include "ample/fast/elemMPinfoFast.h"
 #include "ample/errors.h"
-#include "ample/meshes/formCoord2D.h"
+#include "setups/formCoord2D.h"
 #include "ample/solver/pointShares.h"
 #include "setups/setupHelpers.h"
 #include "setups/setups.h"

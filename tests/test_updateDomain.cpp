@@ -5,7 +5,7 @@
 // and hydrostatic modes, when the half lengths equal l0 times the stretches.
 #include "ample/basis/domainCorners.h"
 #include "ample/elemMPinfo.h"
-#include "ample/meshes/formCoord2D.h"
+#include "setups/formCoord2D.h"
 #include "ample/domains/updateDomain.h"
 #include "ample/stiffness/tensorOps.h"
 #include "ample/updateMPs.h"
