@@ -81,7 +81,7 @@ void checkConverged(const Analysis& an, const Increment& inc, int NRit, double f
 // update) runs only with the program's hooks (solveRun, ample/program/run.h): refused
 // here, not solved wrongly without them
 static void checkHooks(const Analysis& an, const Hooks& hooks) {
-  bool needs = an.beforeStep || an.afterStep || an.bodyForce || an.fem || !an.boundaries.empty() ||
+  bool needs = an.beforeStep || an.afterStep || an.bodyForce || an.fem || an.boundaries.has_value() ||
                an.ghost > 0 || an.substeps > 0 || an.split > 0 || an.domainUpdate != DomainUpdate::Uii;
   for (const MaterialPoint& mp : an.mpData) needs = needs || isCPDI(mp);
   if (needs && !(hooks.startStep && hooks.stepTerms && hooks.afterUpdate && hooks.failedStep && hooks.endStep))

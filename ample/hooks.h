@@ -45,7 +45,8 @@ struct Hooks {
                                                                             // solves the step or throws
   std::function<void(Analysis& an, const Increment& inc)> endStep;          // setup's afterStep, postPro, log
   // loadStep(): the functions of fig 4, each replaced as a whole or kept
-  std::function<void(Mesh&, std::vector<MaterialPoint>&, bool keepCells)> elemMPinfo = ample::elemMPinfo;
+  std::function<void(Mesh&, std::vector<MaterialPoint>&, bool keepCells)> elemMPinfo =  // keepCells: FE mode's
+      [](Mesh& mesh, std::vector<MaterialPoint>& mpData, bool) { ample::elemMPinfo(mesh, mpData); };
   std::function<void(Analysis& an, const Increment& inc, Eigen::VectorXd& fext)> stepTerms;  // body force,
                                                                             // ghost penalty, boundaries
   std::function<std::vector<int>(const Mesh&, const std::vector<MaterialPoint>&)> detFDoFs = ample::detFDoFs;

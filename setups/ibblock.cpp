@@ -50,7 +50,7 @@ Analysis setupGrid(const Params& P) {
   addBoundary(an, {d, e}, BoundaryType::Roller, delta);             // top
   addBoundary(an, {e, a}, BoundaryType::Roller, delta);             // left (fixed side)
   ibSettings(an, P);
-  fillPolygon(an.mpData, Vector2d::Zero(), 2 * N, 2 * N, an.mesh.h, P, 0.0, solidPolygon(an.boundaries));
+  fillPolygon(an.mpData, Vector2d::Zero(), 2 * N, 2 * N, an.mesh.h, P, 0.0, solidPolygon(boundariesOf(an)));
   return an;
 }
 

@@ -217,8 +217,8 @@ Boundary& addBoundary(Analysis& an, std::vector<Vector2d> x, std::vector<Boundar
   b.type = std::move(type);
   b.solid = solid;
   b.delta = deltaOverH * h;
-  an.boundaries.push_back(std::move(b));
-  return an.boundaries.back();
+  editBoundaries(an).push_back(std::move(b));
+  return editBoundaries(an).back();
 }
 
 Boundary& addBoundary(Analysis& an, std::vector<Vector2d> x, BoundaryType type,
@@ -256,7 +256,7 @@ Params boundariesParams(int lstps, int mp) {
 }
 
 void ibSettings(Analysis& an, const Params& P) {
-  for (Boundary& b : an.boundaries)
+  for (Boundary& b : editBoundaries(an))
     b.coupling = get(P, "ibK2") == 0 ? IbCoupling::Paper : IbCoupling::Consistent;
 }
 

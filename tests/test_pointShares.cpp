@@ -2,7 +2,7 @@
 // elemMPinfo: the shares cover every point once, in contiguous ranges; a failure
 // is reported for the first failing point in point order; the basis of 4,096
 // scattered GIMP and CPDI points on two threads equals the serial one bit for bit.
-#include "ample/elemMPinfo.h"
+#include "ample/cpdi/elemMPinfoCPDI.h"
 #include "ample/fast/elemMPinfoFast.h"
 #include "ample/errors.h"
 #include "setups/formCoord2D.h"
@@ -98,14 +98,14 @@ TEST_SUITE("pointShares") {
 #endif
   }
 
-  TEST_CASE("elemMPinfoFast: the basis of 4,096 scattered GIMP and CPDI2 points on two threads equals elemMPinfo's bit for bit") {
+  TEST_CASE("elemMPinfoFast: the basis of 4,096 scattered GIMP and CPDI2 points on two threads equals the serial loop's (elemMPinfoCPDI) bit for bit") {
 #ifndef _OPENMP
-    MESSAGE("built without AMPLE_OPENMP: elemMPinfo is serial, nothing to compare");
+    MESSAGE("built without AMPLE_OPENMP: elemMPinfoFast is serial, nothing to compare");
 #else
     const int before = omp_get_max_threads();
     Mesh mesh[2] = {formCoord2D(20, 20, 20.0, 20.0), formCoord2D(20, 20, 20.0, 20.0)};
     std::vector<MaterialPoint> mps[2] = {scatteredPoints(mesh[0]), scatteredPoints(mesh[0])};
-    elemMPinfo(mesh[0], mps[0]);                      // the core, serial
+    elemMPinfoCPDI(mesh[0], mps[0]);                  // the serial loop of these points
     omp_set_num_threads(2);
     REQUIRE(pointThreads(4096) == std::min(2, 4096 / pointsPerThread()));
     elemMPinfoFast(mesh[1], mps[1]);
@@ -127,7 +127,7 @@ TEST_SUITE("pointShares") {
 #endif
   }
 
-  TEST_CASE("elemMPinfoFast: on two threads a point that left the grid is named as elemMPinfo names it (the first such point)") {
+  TEST_CASE("elemMPinfoFast: on two threads a point that left the grid is named as the serial loop names it (the first such point)") {
     Mesh mesh = formCoord2D(20, 20, 20.0, 20.0);
     std::vector<MaterialPoint> mpData = scatteredPoints(mesh);
     mpData[3000].mpC = Vector2d(25.0, 5.0);           // past x = 20, in the second share
@@ -141,7 +141,7 @@ TEST_SUITE("pointShares") {
       omp_set_num_threads(run + 1);
 #endif
       try {
-        if (run == 0) elemMPinfo(mesh, mpData);
+        if (run == 0) elemMPinfoCPDI(mesh, mpData);
         else elemMPinfoFast(mesh, mpData);
       } catch (const RunError& e) {
         what[run] = e.what();

@@ -4,7 +4,9 @@
 // runHooks connects the extensions to solve()'s hooks (ample/hooks.h), each
 // only where the analysis asks for it:
 //   startStep    progress line, step clock, the setup's beforeStep
-//   elemMPinfo   elemMPinfoFast for large runs (opt.basisLoop; not in a Debug build), timed
+//   elemMPinfo   elemMPinfoCPDI with CPDI points (cpdi/), elemMPinfoMesh on a general mesh
+//                (meshes/), elemMPinfoFast for large runs (opt.basisLoop; not in a Debug
+//                build), timed
 //   stepTerms    the weight in full from step 1 (geostatic=on: initial/geostatic.h),
 //                the body force (detBodyForce), the ghost penalty of the step
 //                (remedies/ghostPenalty.h), the implicit boundaries' K and f
@@ -30,6 +32,7 @@
 //--------------------------------------------------------------------------
 #include "run.h"
 #include "ample/boundaries/ibStiffness.h"
+#include "ample/cpdi/elemMPinfoCPDI.h"
 #include "ample/detExtForce.h"
 #include "ample/domains/updateDomain.h"
 #include "ample/errors.h"
@@ -37,6 +40,7 @@
 #include "ample/initial/geostatic.h"
 #include "ample/locking/detMPsFbar.h"
 #include "ample/meshes/cellSearch.h"
+#include "ample/meshes/elemMPinfoMesh.h"
 #include "ample/remedies/ghostPenalty.h"
 #include "ample/remedies/loadSteps.h"
 #include "ample/remedies/loneNodes.h"
@@ -133,13 +137,16 @@ static Hooks runHooks(Analysis& an, RunLog& log, const RunOptions& opt, RunState
 #else
   const bool large = false;        // a Debug build, to step through: the core's loops at every size
 #endif
-  const BasisLoop basisLoop = large ? opt.basisLoop : elemMPinfo;
+  const bool cpdi = std::any_of(an.mpData.begin(), an.mpData.end(), [](const MaterialPoint& mp) { return isCPDI(mp); });
+  const BasisLoop basisLoop = large && opt.basisLoop ? opt.basisLoop       // (nullptr: the core's elemMPinfo)
+                              : cpdi ? elemMPinfoCPDI : an.mesh.regular() ? nullptr : elemMPinfoMesh;
   const PointLoop pointLoop = large ? opt.pointLoop : PointLoop(detMPs);
   x.Kff.choice = an.solver;                                          // SparseLU, or LDLT if symmetric
   const bool chosen = large || an.solver != LinearSolver::LU;
   h.startStep = [&log, &opt](Analysis& a, const Increment& inc) { startStep(a, inc.lstp, log, opt.quiet); };
   h.elemMPinfo = [&T, &x, basisLoop](Mesh& mesh, std::vector<MaterialPoint>& mpData, bool keepCells) {
-    timed(T.elemMPinfo, basisLoop, mesh, mpData, keepCells);
+    if (basisLoop) timed(T.elemMPinfo, basisLoop, mesh, mpData, keepCells);
+    else timed(T.elemMPinfo, elemMPinfo, mesh, mpData);
     x.gap.lap();                                                     // detExtForce from here
   };
   h.stepTerms = [&T, &x](Analysis& a, const Increment& inc, Eigen::VectorXd& fext) {
@@ -147,8 +154,8 @@ static Hooks runHooks(Analysis& an, RunLog& log, const RunOptions& opt, RunState
     if (a.geostatic) fext += timed(T.detExtForce, selfWeight, int(fext.size()), a.g, a.mpData) * (1.0 - inc.lf1);
     if (a.bodyForce) fext += timed(T.detExtForce, detBodyForce, int(fext.size()), a.bodyForce, inc.lf1, a.mpData);
     x.Kgp = ghostPenaltyOf(a);                                       // remedy (off: empty)
-    if (!a.boundaries.empty())                                       // [Boundaries]: K_IB, f_IB
-      x.ib = ibStiffness(a.mesh, a.boundaries, a.mpData, inc.lstp, inc.share);
+    if (!boundariesOf(a).empty())                                    // [Boundaries]: K_IB, f_IB
+      x.ib = ibStiffness(a.mesh, boundariesOf(a), a.mpData, inc.lstp, inc.share);
     x.NRit = 0, x.fErr = 1.0;
   };
   if (an.lone > 0)                                                   // remedy: 1 always, 2 from an.loneFrom
@@ -175,7 +182,7 @@ static Hooks runHooks(Analysis& an, RunLog& log, const RunOptions& opt, RunState
   else
     h.detMPs = [&T, pointLoop](const Eigen::VectorXd& uvw, std::vector<MaterialPoint>& mpData, Formulation form,
                                DetMPsOut& mps) { timed(T.detMPs, pointLoop, uvw, mpData, form, mps); };
-  if (an.ghost > 0 || !an.boundaries.empty())
+  if (an.ghost > 0 || !boundariesOf(an).empty())
     h.passTerms = [&x](const Eigen::VectorXd& uvw, DetMPsOut& mps, Eigen::VectorXd& fbnd) {
       addGhostPenalty(x.Kgp, uvw, mps.Kt, mps.fint);                 // remedy (off: nothing)
       fbnd = addImplicitBoundaries(x.ib, uvw, mps.Kt, mps.fint);     // [Boundaries] (none: 0)
@@ -192,7 +199,6 @@ static Hooks runHooks(Analysis& an, RunLog& log, const RunOptions& opt, RunState
     recordStep(log, inc, NRit, fErr, x.Kff, true);                   // converged: its steps.csv row
     x.gap.lap();                                                     // updateMPs from here
   };
-  const bool cpdi = std::any_of(an.mpData.begin(), an.mpData.end(), [](const MaterialPoint& mp) { return isCPDI(mp); });
   if (cpdi || an.domainUpdate != DomainUpdate::Uii)                  // [Lagrangian]'s, CPDI's domains
     h.updateDomain = [method = an.domainUpdate](const Mesh& mesh, const Eigen::VectorXd& uvw, MaterialPoint& mp) {
       updateDomain(mesh, uvw, method, mp);
@@ -200,9 +206,9 @@ static Hooks runHooks(Analysis& an, RunLog& log, const RunOptions& opt, RunState
   h.afterUpdate = [&log, &x, &opt, &T](Analysis& a, const Increment& inc, int /*NRit*/, double /*fErr*/) {
     T.updateMPs += x.gap.lap();
     if (a.fem) moveMesh(a.mesh, a.uvw);                              // FEM: the mesh follows (MPM: reset)
-    if (!a.boundaries.empty()) {                                     // [Boundaries]: forces, motion by du
-      a.ibForce = boundaryForces(x.ib, a.uvw, int(a.boundaries.size()));
-      moveBoundaries(a.boundaries, inc.lstp, inc.share);
+    if (!boundariesOf(a).empty()) {                                  // [Boundaries]: forces, motion by du
+      a.ibForce = boundaryForces(x.ib, a.uvw, int(boundariesOf(a).size()));
+      moveBoundaries(editBoundaries(a), inc.lstp, inc.share);
     }
     if (a.split > 0) log.splits += splitPoints(a.mesh, a.split, a.mpData, opt.quiet);  // remedy
   };
@@ -233,7 +239,7 @@ static Hooks runHooks(Analysis& an, RunLog& log, const RunOptions& opt, RunState
 static void checkGeneralMesh(const Analysis& an) {
   const std::string mesh = std::string("the background mesh is a ") + meshName(an.mesh) +
                            " of " + std::to_string(an.mesh.nels()) + " cells";
-  if (!an.boundaries.empty())
+  if (!boundariesOf(an).empty())
     throw InputError("implicit boundaries ([Boundaries]) need the regular grid (cutCells); " + mesh);
   if (an.ghost > 0) throw InputError("ghost=" + std::to_string(an.ghost) + ": the ghost penalty "
                                      "needs the regular grid (its faces); " + mesh + "; use ghost=0");
