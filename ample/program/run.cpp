@@ -154,7 +154,7 @@ static Hooks runHooks(Analysis& an, RunLog& log, const RunOptions& opt, RunState
     if (a.geostatic) fext += timed(T.detExtForce, selfWeight, int(fext.size()), a.g, a.mpData) * (1.0 - inc.lf1);
     if (a.bodyForce) fext += timed(T.detExtForce, detBodyForce, int(fext.size()), a.bodyForce, inc.lf1, a.mpData);
     x.Kgp = ghostPenaltyOf(a);                                       // remedy (off: empty)
-    if (!boundariesOf(a).empty())                                    // [Boundaries]: K_IB, f_IB
+    if (a.boundaries.has_value())                                    // [Boundaries]: K_IB, f_IB
       x.ib = ibStiffness(a.mesh, boundariesOf(a), a.mpData, inc.lstp, inc.share);
     x.NRit = 0, x.fErr = 1.0;
   };
@@ -182,7 +182,7 @@ static Hooks runHooks(Analysis& an, RunLog& log, const RunOptions& opt, RunState
   else
     h.detMPs = [&T, pointLoop](const Eigen::VectorXd& uvw, std::vector<MaterialPoint>& mpData, Formulation form,
                                DetMPsOut& mps) { timed(T.detMPs, pointLoop, uvw, mpData, form, mps); };
-  if (an.ghost > 0 || !boundariesOf(an).empty())
+  if (an.ghost > 0 || an.boundaries.has_value())
     h.passTerms = [&x](const Eigen::VectorXd& uvw, DetMPsOut& mps, Eigen::VectorXd& fbnd) {
       addGhostPenalty(x.Kgp, uvw, mps.Kt, mps.fint);                 // remedy (off: nothing)
       fbnd = addImplicitBoundaries(x.ib, uvw, mps.Kt, mps.fint);     // [Boundaries] (none: 0)
@@ -206,7 +206,7 @@ static Hooks runHooks(Analysis& an, RunLog& log, const RunOptions& opt, RunState
   h.afterUpdate = [&log, &x, &opt, &T](Analysis& a, const Increment& inc, int /*NRit*/, double /*fErr*/) {
     T.updateMPs += x.gap.lap();
     if (a.fem) moveMesh(a.mesh, a.uvw);                              // FEM: the mesh follows (MPM: reset)
-    if (!boundariesOf(a).empty()) {                                  // [Boundaries]: forces, motion by du
+    if (a.boundaries.has_value()) {                                  // [Boundaries]: forces, motion by du
       a.ibForce = boundaryForces(x.ib, a.uvw, int(boundariesOf(a).size()));
       moveBoundaries(editBoundaries(a), inc.lstp, inc.share);
     }
@@ -239,7 +239,7 @@ static Hooks runHooks(Analysis& an, RunLog& log, const RunOptions& opt, RunState
 static void checkGeneralMesh(const Analysis& an) {
   const std::string mesh = std::string("the background mesh is a ") + meshName(an.mesh) +
                            " of " + std::to_string(an.mesh.nels()) + " cells";
-  if (!boundariesOf(an).empty())
+  if (an.boundaries.has_value())
     throw InputError("implicit boundaries ([Boundaries]) need the regular grid (cutCells); " + mesh);
   if (an.ghost > 0) throw InputError("ghost=" + std::to_string(an.ghost) + ": the ghost penalty "
                                      "needs the regular grid (its faces); " + mesh + "; use ghost=0");
