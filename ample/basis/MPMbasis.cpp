@@ -6,6 +6,7 @@
 #include "MPMbasis.h"
 #include "SvpGIMP.h"
 #include "SvpMPM.h"
+#include "constitutive/exercise.h"
 
 namespace ample {
 
