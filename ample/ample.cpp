@@ -77,16 +77,17 @@ void checkConverged(const Analysis& an, const Increment& inc, int NRit, double f
 }
 
 // an analysis that asks for an extension (a setup's beforeStep or afterStep, a body force,
-// the finite element mode, implicit boundaries, a remedy, CPDI points or another domain
-// update) runs only with the program's hooks (solveRun, setups/program/run.h): refused
+// the finite element mode, implicit boundaries, a remedy, CPDI points, a general mesh or
+// another domain update) runs only with the program's hooks (solveRun, setups/program/run.h): refused
 // here, not solved wrongly without them
 static void checkHooks(const Analysis& an, const Hooks& hooks) {
-  bool needs = an.beforeStep || an.afterStep || an.bodyForce || an.fem || !an.boundaries.empty() ||
-               an.ghost > 0 || an.substeps > 0 || an.split > 0 || an.domainUpdate != DomainUpdate::Uii;
+  bool needs = an.beforeStep || an.afterStep || an.bodyForce || an.fem || an.boundaries.has_value() ||
+               an.ghost > 0 || an.substeps > 0 || an.split > 0 || an.domainUpdate != DomainUpdate::Uii ||
+               !an.mesh.regular();
   for (const MaterialPoint& mp : an.mpData) needs = needs || isCPDI(mp);
   if (needs && !hooks.program())
     throw InputError(an.name + ": this analysis needs the program's hooks (a setup's beforeStep/afterStep, "
-                     "bodyForce, fem, boundaries, ghost, substeps, split, CPDI or domainUpdate): run it "
+                     "bodyForce, fem, boundaries, ghost, substeps, split, CPDI, a general mesh or domainUpdate): run it "
                      "with solveRun");
 }
 

@@ -46,8 +46,8 @@ struct Hooks : FreeSolve, UpdateDomain {
                                                     // none: the run stops); solves the step or throws
   virtual void endStep(Analysis&, const Increment&) const {}                // setup's afterStep, postPro, log
   // loadStep(): the functions of fig 4, each kept or replaced as a whole
-  virtual void elemMPinfo(Mesh& mesh, std::vector<MaterialPoint>& mpData, bool keepCells) const {
-    ample::elemMPinfo(mesh, mpData, keepCells);
+  virtual void elemMPinfo(Mesh& mesh, std::vector<MaterialPoint>& mpData, bool /*keepCells: FE mode*/) const {
+    ample::elemMPinfo(mesh, mpData);
   }
   virtual void stepTerms(Analysis&, const Increment&, Eigen::VectorXd& /*fext*/) const {}  // body force,
                                                     // geostatic weight, ghost penalty, boundaries

@@ -12,7 +12,7 @@
 //          history.csv: load factor and tip displacement over l at every step
 // Tests:   tests/test_ample.cpp (setups run), tests/test_detMPs.cpp
 //--------------------------------------------------------------------------
-#include "ample/meshes/formCoord2D.h"
+#include "formCoord2D.h"
 #include "setupHelpers.h"
 #include <cmath>
 

@@ -11,7 +11,7 @@
 //          centres plus the initial half spacing h/(2 mp) (MPM, [Lagrangian] table 6)
 // Tests:   tests/test_ample.cpp
 //--------------------------------------------------------------------------
-#include "ample/meshes/formCoord2D.h"
+#include "formCoord2D.h"
 #include "setupHelpers.h"
 #include <cmath>
 

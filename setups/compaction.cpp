@@ -10,7 +10,7 @@
 // Outputs: Analysis (mesh, mpData, lstps, g) · results: error (eq 37)
 // Tests:   tests/test_setups.cpp (eq 36 / 37 values), tests/test_ample.cpp, tests/test_output.cpp
 //--------------------------------------------------------------------------
-#include "ample/meshes/formCoord2D.h"
+#include "formCoord2D.h"
 #include "setupHelpers.h"
 #include <cmath>
 

@@ -34,9 +34,9 @@
 #include "ample/detFDoFs.h"
 #include "ample/remedies/loneNodes.h"
 #include "ample/detMPs.h"
-#include "ample/elemMPinfo.h"
+#include "ample/cpdi/elemMPinfoCPDI.h"
 #include "ample/errors.h"
-#include "ample/meshes/formCoord2D.h"
+#include "formCoord2D.h"
 #include "ample/linSolve.h"
 #include "setupHelpers.h"
 #include <cmath>
@@ -114,7 +114,7 @@ Analysis setupGrid(const Deepbeam& p) {
 // depend on u, so solve()'s first Newton pass is this and the second corrects round-off)
 static Eigen::VectorXd linearSolution(Analysis& an) {
   const int nDoF = an.mesh.nDoF();
-  elemMPinfo(an.mesh, an.mpData);
+  elemMPinfoCPDI(an.mesh, an.mpData);
   const Eigen::VectorXd fext = detExtForce(nDoF, an.g, an.mpData);
   const std::vector<int> fd = detFDoFsLone(an.mesh, an.mpData);
   const DetMPsOut mps = detMPs(Eigen::VectorXd::Zero(nDoF), an.mpData, Formulation::SS);

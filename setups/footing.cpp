@@ -19,7 +19,7 @@
 // Tests:   tests/test_ibStiffness.cpp
 //--------------------------------------------------------------------------
 #include "ample/errors.h"
-#include "ample/meshes/formCoord2D.h"
+#include "formCoord2D.h"
 #include "setupHelpers.h"
 #include <cmath>
 
@@ -59,7 +59,7 @@ Analysis setupGrid(const Footing& p) {
       .du = {Vector2d(0, -push / an.lstps)};                                    // the footing
   addBoundary(an, {{x0, y1}, {x0, y0}}, BoundaryType::Roller, delta);           // left side
   ibSettings(an, p);
-  fillPolygon(an.mpData, Vector2d(x0, y0), n, n, an.mesh.h, p, 0.0, solidPolygon(an.boundaries));
+  fillPolygon(an.mpData, Vector2d(x0, y0), n, n, an.mesh.h, p, 0.0, solidPolygon(boundariesOf(an)));
   an.afterStep = [push](Analysis& a, int lstp, double lf) {
     Vector2d sum = Vector2d::Zero();
     for (const Vector2d& f : a.ibForce) sum += f;

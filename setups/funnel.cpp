@@ -23,7 +23,7 @@
 //          results: the same at the last step
 // Tests:   tests/test_ibMoving.cpp
 //--------------------------------------------------------------------------
-#include "ample/meshes/formCoord2D.h"
+#include "formCoord2D.h"
 #include "setupHelpers.h"
 #include <cmath>
 
@@ -99,8 +99,8 @@ Analysis setupGrid(const Funnel& p) {
     double worst = 0;                                             // most negative signed distance
     for (const MaterialPoint& mp : a.mpData)
       for (int w : {0, 2})                                        // the walls
-        for (int s = 0; s < a.boundaries[w].segments(); ++s) {
-          const Boundary& b = a.boundaries[w];
+        for (int s = 0; s < boundariesOf(a)[w].segments(); ++s) {
+          const Boundary& b = boundariesOf(a)[w];
           const double xa = std::min(b.x[s](0), b.x[s + 1](0)), xb = std::max(b.x[s](0), b.x[s + 1](0));
           if (mp.mpC(0) < xa || mp.mpC(0) > xb) continue;
           const double phi = signedDistance(b, s, mp.mpC);

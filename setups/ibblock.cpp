@@ -18,7 +18,7 @@
 //          sxx_mean (MPa), points
 // Tests:   tests/test_ibStiffness.cpp
 //--------------------------------------------------------------------------
-#include "ample/meshes/formCoord2D.h"
+#include "formCoord2D.h"
 #include "setupHelpers.h"
 #include <cmath>
 
@@ -59,7 +59,7 @@ Analysis setupGrid(const Ibblock& p) {
   addBoundary(an, {d, e}, BoundaryType::Roller, delta);             // top
   addBoundary(an, {e, a}, BoundaryType::Roller, delta);             // left (fixed side)
   ibSettings(an, p);
-  fillPolygon(an.mpData, Vector2d::Zero(), 2 * N, 2 * N, an.mesh.h, p, 0.0, solidPolygon(an.boundaries));
+  fillPolygon(an.mpData, Vector2d::Zero(), 2 * N, 2 * N, an.mesh.h, p, 0.0, solidPolygon(boundariesOf(an)));
   return an;
 }
 

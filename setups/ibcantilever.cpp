@@ -34,7 +34,7 @@
 // Tests:   tests/test_ibCantilever.cpp
 //--------------------------------------------------------------------------
 #include "ample/errors.h"
-#include "ample/meshes/formCoord2D.h"
+#include "formCoord2D.h"
 #include "setupHelpers.h"
 #include <cmath>
 #include <cstdio>

@@ -21,7 +21,7 @@
 //          (the largest at a point), ru (eq 29), sxy_mean_MPa, points
 // Tests:   tests/test_ibSetups.cpp
 //--------------------------------------------------------------------------
-#include "ample/meshes/formCoord2D.h"
+#include "formCoord2D.h"
 #include "setupHelpers.h"
 #include <algorithm>
 #include <cmath>

@@ -30,7 +30,7 @@
 // Tests:   tests/test_benchmarks.cpp, CTest setup.prandtl
 //--------------------------------------------------------------------------
 #include "ample/errors.h"
-#include "ample/meshes/formCoord2D.h"
+#include "formCoord2D.h"
 #include "setupHelpers.h"
 #include <cmath>
 

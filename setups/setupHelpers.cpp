@@ -4,10 +4,10 @@
 // See setupHelpers.h for inputs and outputs.
 //--------------------------------------------------------------------------
 #include "setupHelpers.h"
-#include "ample/meshes/detMpPos.h"
+#include "detMpPos.h"
 #include "ample/errors.h"
 #include "ample/solver/solverChoice.h"
-#include "ample/meshes/shapefunc.h"
+#include "shapefunc.h"
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -219,8 +219,8 @@ Boundary& addBoundary(Analysis& an, std::vector<Vector2d> x, std::vector<Boundar
   b.type = std::move(type);
   b.solid = solid;
   b.delta = deltaOverH * h;
-  an.boundaries.push_back(std::move(b));
-  return an.boundaries.back();
+  editBoundaries(an).push_back(std::move(b));
+  return editBoundaries(an).back();
 }
 
 Boundary& addBoundary(Analysis& an, std::vector<Vector2d> x, BoundaryType type,
@@ -248,7 +248,7 @@ Params ibCommonParams(IbCommon& p) {
 }
 
 void ibSettings(Analysis& an, const IbCommon& p) {
-  for (Boundary& b : an.boundaries) b.coupling = p.ibK2;
+  for (Boundary& b : editBoundaries(an)) b.coupling = p.ibK2;
 }
 
 Polygon solidPolygon(const std::vector<Boundary>& boundaries) {

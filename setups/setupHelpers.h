@@ -26,6 +26,7 @@
 //          tests/test_boundary.cpp (fillPolygon, addBoundary, solidPolygon)
 //--------------------------------------------------------------------------
 #pragma once
+#include "ample/boundaries/boundary.h"
 #include "ample/meshes/clipPolygon.h"
 #include "setups.h"
 #include <functional>

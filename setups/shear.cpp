@@ -25,8 +25,8 @@
 //          last step; history.csv: lstp, gamma, mean and reference sigma_xy, error
 // Tests:   tests/test_ample.cpp (against closed forms written in the test)
 //--------------------------------------------------------------------------
-#include "ample/elemMPinfo.h"
-#include "ample/meshes/formCoord2D.h"
+#include "ample/cpdi/elemMPinfoCPDI.h"
+#include "formCoord2D.h"
 #include "homogeneous.h"
 #include "setupHelpers.h"
 #include <cmath>
@@ -90,7 +90,7 @@ Analysis setupGrid(const Shear& p) {
       an.tagged.push_back(i);
   }
   an.beforeStep = [dg](Analysis& a, int) {                      // shear the boundary cells
-    elemMPinfo(a.mesh, a.mpData);
+    elemMPinfoCPDI(a.mesh, a.mpData);
     std::vector<char> fixed(a.mesh.nodes(), 0);
     for (int p : a.tagged)
       for (int e = 0; e < a.mpData[p].ne; ++e)

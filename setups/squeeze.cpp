@@ -16,7 +16,7 @@
 // Outputs: Analysis · results · history.csv: lstp, v_top, force, force_a
 // Tests:   tests/test_setups.cpp, CTest setup.squeeze (docs/new-setup.md)
 //--------------------------------------------------------------------------
-#include "ample/meshes/formCoord2D.h"
+#include "formCoord2D.h"
 #include "setupHelpers.h"
 #include <algorithm>
 #include <cmath>

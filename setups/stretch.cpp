@@ -15,7 +15,7 @@
 //          history.csv: lstp, reaction, reference
 // Tests:   tests/test_ample.cpp (against closed forms written in the test)
 //--------------------------------------------------------------------------
-#include "ample/meshes/formCoord2D.h"
+#include "formCoord2D.h"
 #include "homogeneous.h"
 #include "setupHelpers.h"
 #include <cmath>

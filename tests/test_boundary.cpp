@@ -8,7 +8,7 @@
 #include "ample/boundaries/cutCells.h"
 #include "ample/boundaries/dirichletBand.h"
 #include "ample/errors.h"
-#include "ample/meshes/formCoord2D.h"
+#include "setups/formCoord2D.h"
 #include "setups/setupHelpers.h"
 #include "setups/setups.h"
 #include <doctest/doctest.h>
@@ -372,21 +372,21 @@ TEST_SUITE("fillPolygon") {
 TEST_SUITE("addBoundary") {
   TEST_CASE("addBoundary: band width 1e-6 h and a type per segment and the solid polygon") {
     Analysis an;
-    CHECK(an.boundaries.empty());  // none by default
+    CHECK(!an.boundaries.has_value());  // none by default
     an.mesh = formCoord2D(10, 10, 0.1, 0.1);  // h = 10 mm
     Boundary& bottom = addBoundary(an, {{0, 0}, {0.1, 0}}, BoundaryType::Roller);
     CHECK(near(bottom.delta, 1e-8, 1e-20));
     addBoundary(an, {{0.1, 0}, {0.1, 0.1}}, BoundaryType::PrescribedNormal).du = {{-0.001, 0}};
     addBoundary(an, {{0.1, 0.1}, {0, 0.1}, {0, 0}}, {BoundaryType::Roller, BoundaryType::Fixed},
                 1e-4);
-    REQUIRE(an.boundaries.size() == 3);
-    CHECK(an.boundaries[1].du.size() == 1);
-    CHECK(duAt(an.boundaries[1], 1) == Vector2d(-0.001, 0));
-    CHECK(an.boundaries[2].segments() == 2);
-    CHECK(an.boundaries[2].type[1] == BoundaryType::Fixed);
-    CHECK(near(an.boundaries[2].delta, 1e-6, 1e-18));
+    REQUIRE(boundariesOf(an).size() == 3);
+    CHECK(boundariesOf(an)[1].du.size() == 1);
+    CHECK(duAt(boundariesOf(an)[1], 1) == Vector2d(-0.001, 0));
+    CHECK(boundariesOf(an)[2].segments() == 2);
+    CHECK(boundariesOf(an)[2].type[1] == BoundaryType::Fixed);
+    CHECK(near(boundariesOf(an)[2].delta, 1e-6, 1e-18));
     // the polygon round the solid: the joints once, the closing point not repeated
-    const Polygon poly = solidPolygon(an.boundaries);
+    const Polygon poly = solidPolygon(boundariesOf(an));
     REQUIRE(poly.size() == 4);
     CHECK(poly[0] == Vector2d(0, 0));
     CHECK(poly[1] == Vector2d(0.1, 0));
@@ -403,7 +403,7 @@ TEST_SUITE("addBoundary") {
       CAPTURE(name);
       const Setup* s = findSetup(name);
       REQUIRE(s != nullptr);
-      CHECK(s->setupGrid(s->params()).boundaries.empty());
+      CHECK(!s->setupGrid(s->params()).boundaries.has_value());
     }
   }
 }

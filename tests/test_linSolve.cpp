@@ -61,7 +61,7 @@ CollapseStep1 collapseStep1() {
   Params P = s->params();
   Analysis an = s->setupGrid(P);
   const int nDoF = an.mesh.nDoF();
-  elemMPinfo(an.mesh, an.mpData, an.fem);
+  elemMPinfo(an.mesh, an.mpData);
   CollapseStep1 c{SpMat(), detFDoFsLone(an.mesh, an.mpData)};
   DetMPsOut mps;
   mps.Kt = stiffnessPattern(nDoF, an.mpData);

@@ -7,6 +7,7 @@
 // areas, the bilinear map written out, central differences, the regular grid's
 // fast path (SvpMPM, elemForMP) and the analytic Hencky stress of a uniform stretch.
 #include "ample/basis/MPMbasis.h"
+#include "ample/meshes/elemMPinfoMesh.h"
 #include "ample/meshes/cellBasis.h"
 #include "ample/meshes/cellSearch.h"
 #include "ample/boundaries/cutCells.h"

@@ -2,7 +2,7 @@
 // the first nn its own, the rest zero; a copy of a point is a copy of its basis and of its CPDI
 // domain; the size of a point (the memory of a large run).
 #include "ample/elemMPinfo.h"
-#include "ample/meshes/formCoord2D.h"
+#include "setups/formCoord2D.h"
 #include "setups/setupHelpers.h"
 #include "setups/setups.h"
 #include <doctest/doctest.h>

@@ -2,7 +2,7 @@
 // pass and the first bad point; a failed load step can be rescued by sub-division.
 #include "setups/program/run.h"
 #include "ample/errors.h"
-#include "ample/meshes/formCoord2D.h"
+#include "setups/formCoord2D.h"
 #include "ample/remedies/ghostPenalty.h"
 #include "ample/remedies/loadSteps.h"
 #include "testProblems.h"

@@ -3,18 +3,18 @@
 #
 # Layers, bottom to top; a file may include files of its own layer or below:
 #   0 data          ample/mpData.h ample/errors.h ample/analysis.h
-#                   ample/boundaries/boundary.h
 #   0 constitutive  constitutive/*  (Eigen and the standard library only; exercise.h, the
 #                   student copy's error, lives here so that nothing of ample/ is needed)
-#   1 pieces        ample/meshes/* ample/stiffness/*
+#   1 pieces        ample/stiffness/*
 #   2 parts         ample/basis/*
 #   3 core          ample/*.h ample/*.cpp (the loop, its hooks and the functions it calls:
 #                   elemMPinfo, detExtForce, detFDoFs, linSolve, detMPs, updateMPs)
-#   4 extensions    ample/solver/* ample/remedies/* ample/boundaries/* ample/fast/*
-#                   ample/domains/* ample/locking/* ample/initial/* (they may
-#                   include the core, never the other way; ample/fast/, a core function
-#                   replaced as a whole for large runs, is included by setups/program/* only,
-#                   which chooses it)
+#   4 extensions    the rooms ample/solver/ remedies/ boundaries/ fast/ domains/ locking/
+#                   initial/ cpdi/ meshes/ (each with a README.md; they may include the
+#                   core and each other, never the core them: a core file, layers 0-3, that
+#                   includes a room is named; ample/fast/, a core function replaced as a
+#                   whole for large runs, is included by setups/program/* only, which
+#                   chooses it)
 #   5 output        plotting/*  (postPro and the VTK writers; the scripts that draw a run)
 #   6 setups        setups/*
 #   7 program       setups/program/* (the command line, the run and its hooks, its output files)
@@ -29,10 +29,11 @@ cd "$(dirname "$0")/.."
 
 layer() {  # layer of a project file, -1 for one outside the layered tree
   case "$1" in
-    ample/mpData.h|ample/errors.h|ample/analysis.h|ample/boundaries/boundary.h|constitutive/*) echo 0 ;;
-    ample/meshes/*|ample/stiffness/*) echo 1 ;;
+    ample/mpData.h|ample/errors.h|ample/analysis.h|constitutive/*) echo 0 ;;
+    ample/stiffness/*) echo 1 ;;
     ample/basis/*) echo 2 ;;
-    ample/solver/*|ample/remedies/*|ample/boundaries/*|ample/fast/*|ample/domains/*|ample/locking/*|ample/initial/*) echo 4 ;;
+    ample/solver/*|ample/remedies/*|ample/boundaries/*|ample/fast/*|ample/domains/*|ample/locking/*|\
+    ample/initial/*|ample/cpdi/*|ample/meshes/*) echo 4 ;;
     setups/program/*) echo 7 ;;
     ample/*/*) echo -1 ;;   # a folder of ample/ without a layer
     ample/*) echo 3 ;;
@@ -55,7 +56,9 @@ for f in ample/* ample/*/* constitutive/* setups/* setups/*/* plotting/*; do
     t=$(realpath --relative-to=. "$t")
     lt=$(layer "$t")
     if [ "$lt" -lt 0 ]; then echo "$f includes $inc, which is not in the tree"; bad=1; continue; fi
-    if [ "$lt" -gt "$lf" ]; then
+    if [ "$lf" -le 3 ] && [ "$lt" -eq 4 ]; then
+      echo "$f (the core, layer $lf) includes $t: the core includes no extension (layer 4)"; bad=1
+    elif [ "$lt" -gt "$lf" ]; then
       echo "$f (layer $lf) includes $t (layer $lt): an include up a layer"; bad=1
     fi
     case "$t" in ample/fast/*)   # an extension: only the program (and its own room) chooses it

@@ -4,7 +4,9 @@
 // RunHooks connects the extensions to solve()'s hooks (ample/hooks.h), each
 // only where the analysis asks for it:
 //   startStep    progress line, step clock, the setup's beforeStep
-//   elemMPinfo   elemMPinfoFast for large runs (opt.basisLoop; not in a Debug build), timed
+//   elemMPinfo   elemMPinfoCPDI with CPDI points (cpdi/), elemMPinfoMesh on a general mesh
+//                (meshes/), elemMPinfoFast for large runs (opt.basisLoop; not in a Debug
+//                build), timed
 //   stepTerms    the weight in full from step 1 (geostatic=on: initial/geostatic.h),
 //                the body force (detBodyForce), the ghost penalty of the step
 //                (remedies/ghostPenalty.h), the implicit boundaries' K and f
@@ -30,6 +32,7 @@
 //--------------------------------------------------------------------------
 #include "run.h"
 #include "ample/boundaries/ibStiffness.h"
+#include "ample/cpdi/elemMPinfoCPDI.h"
 #include "ample/detExtForce.h"
 #include "ample/domains/updateDomain.h"
 #include "ample/errors.h"
@@ -37,6 +40,7 @@
 #include "ample/initial/geostatic.h"
 #include "ample/locking/detMPsFbar.h"
 #include "ample/meshes/cellSearch.h"
+#include "ample/meshes/elemMPinfoMesh.h"
 #include "ample/remedies/ghostPenalty.h"
 #include "ample/remedies/loadSteps.h"
 #include "ample/remedies/loneNodes.h"
@@ -89,8 +93,9 @@ struct RunHooks : Hooks {
   Timers& T;
   const RunOptions& opt;
   RunState& x;
-  BasisLoop basisLoop = ample::elemMPinfo;       // the core's loops, or the fast ones of large runs
-  PointLoop pointLoop = ample::detMPs;
+  BasisLoop basisLoop = nullptr;                 // the core's elemMPinfo, or CPDI's, a general mesh's,
+                                                 // the fast one of large runs
+  PointLoop pointLoop = ample::detMPs;           // the core's point loop, or the fast one
   bool chosen = false;                           // solver= (or a large run): the chosen solver
   bool cpdi = false;                             // CPDI points: their domain update
 
@@ -100,10 +105,13 @@ struct RunHooks : Hooks {
 #else
     const bool large = false;      // a Debug build, to step through: the core's loops at every size
 #endif
-    if (large) basisLoop = opt.basisLoop, pointLoop = opt.pointLoop;
+    cpdi = std::any_of(an.mpData.begin(), an.mpData.end(), [](const MaterialPoint& mp) { return isCPDI(mp); });
+    if (cpdi) basisLoop = elemMPinfoCPDI;                            // CPDI points (cpdi/), on either mesh
+    else if (!an.mesh.regular()) basisLoop = elemMPinfoMesh;         // a general mesh (meshes/)
+    if (large && opt.basisLoop) basisLoop = opt.basisLoop;           // each of them, faster
+    if (large) pointLoop = opt.pointLoop;
     x.Kff.choice = an.solver;                                        // SparseLU, or LDLT if symmetric
     chosen = large || an.solver != LinearSolver::LU;
-    cpdi = std::any_of(an.mpData.begin(), an.mpData.end(), [](const MaterialPoint& mp) { return isCPDI(mp); });
   }
   bool program() const override { return true; }
 
@@ -112,7 +120,7 @@ struct RunHooks : Hooks {
   }
   void elemMPinfo(Mesh& mesh, std::vector<MaterialPoint>& mpData, bool keepCells) const override {
     ScopedTimer timer{T.elemMPinfo, Stopwatch()};
-    basisLoop(mesh, mpData, keepCells);
+    basisLoop ? basisLoop(mesh, mpData, keepCells) : ample::elemMPinfo(mesh, mpData);
     x.gap.lap();                                                     // detExtForce from here
   }
   void stepTerms(Analysis& a, const Increment& inc, Eigen::VectorXd& fext) const override {
@@ -120,8 +128,8 @@ struct RunHooks : Hooks {
     if (a.geostatic) fext += timed(T.detExtForce, selfWeight, int(fext.size()), a.g, a.mpData) * (1.0 - inc.lf1);
     if (a.bodyForce) fext += timed(T.detExtForce, detBodyForce, int(fext.size()), a.bodyForce, inc.lf1, a.mpData);
     x.Kgp = ghostPenaltyOf(a);                                       // remedy (off: empty)
-    if (!a.boundaries.empty())                                       // [Boundaries]: K_IB, f_IB
-      x.ib = ibStiffness(a.mesh, a.boundaries, a.mpData, inc.lstp, inc.share);
+    if (a.boundaries.has_value())                                    // [Boundaries]: K_IB, f_IB
+      x.ib = ibStiffness(a.mesh, boundariesOf(a), a.mpData, inc.lstp, inc.share);
     x.NRit = 0, x.fErr = 1.0;
   }
   std::vector<int> detFDoFs(const Mesh& mesh, const std::vector<MaterialPoint>& mpData) const override {
@@ -140,7 +148,7 @@ struct RunHooks : Hooks {
     an.locking == Locking::Fbar ? detMPsFbar(an.mesh, uvw, mpData, form, mps) : pointLoop(uvw, mpData, form, mps);
   }
   void passTerms(const Eigen::VectorXd& uvw, DetMPsOut& mps, Eigen::VectorXd& fbnd) const override {
-    if (an.ghost == 0 && an.boundaries.empty()) return;
+    if (an.ghost == 0 && !an.boundaries.has_value()) return;
     addGhostPenalty(x.Kgp, uvw, mps.Kt, mps.fint);                   // remedy (off: nothing)
     fbnd = addImplicitBoundaries(x.ib, uvw, mps.Kt, mps.fint);       // [Boundaries] (none: 0)
   }
@@ -163,9 +171,9 @@ struct RunHooks : Hooks {
   void afterUpdate(Analysis& a, const Increment& inc, int /*NRit*/, double /*fErr*/) const override {
     T.updateMPs += x.gap.lap();
     if (a.fem) moveMesh(a.mesh, a.uvw);                              // FEM: the mesh follows (MPM: reset)
-    if (!a.boundaries.empty()) {                                     // [Boundaries]: forces, motion by du
-      a.ibForce = boundaryForces(x.ib, a.uvw, int(a.boundaries.size()));
-      moveBoundaries(a.boundaries, inc.lstp, inc.share);
+    if (a.boundaries.has_value()) {                                  // [Boundaries]: forces, motion by du
+      a.ibForce = boundaryForces(x.ib, a.uvw, int(boundariesOf(a).size()));
+      moveBoundaries(editBoundaries(a), inc.lstp, inc.share);
     }
     if (a.split > 0) log.splits += splitPoints(a.mesh, a.split, a.mpData, opt.quiet);  // remedy
   }
@@ -240,7 +248,7 @@ void solveRun(Analysis& an, RunLog& log, const RunOptions& opt) {
 static void checkGeneralMesh(const Analysis& an) {
   const std::string mesh = std::string("the background mesh is a ") + meshName(an.mesh) +
                            " of " + std::to_string(an.mesh.nels()) + " cells";
-  if (!an.boundaries.empty())
+  if (an.boundaries.has_value())
     throw InputError("implicit boundaries ([Boundaries]) need the regular grid (cutCells); " + mesh);
   if (an.ghost > 0) throw InputError("ghost=" + std::to_string(an.ghost) + ": the ghost penalty "
                                      "needs the regular grid (its faces); " + mesh + "; use ghost=0");

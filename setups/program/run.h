@@ -34,8 +34,9 @@ struct RunOptions {
                              // (--accept-floor; ample/solver/roundOffFloor.h)
   // the loops over points of a large run (ample/fast/: elemMPinfoFast, detMPsFast; the same
   // numbers, faster), chosen once for runs of pointsPerThread() points or more in an optimised
-  // build (a Debug build, to step through, runs the core's at every size); the core's by default
-  BasisLoop basisLoop = elemMPinfo;
+  // build (a Debug build, to step through, runs the serial ones at every size); by default the
+  // serial ones (basisLoop nullptr: the one the run's mesh and points need, run.cpp)
+  BasisLoop basisLoop = nullptr;
   PointLoop pointLoop = detMPs;
 };
 

@@ -167,7 +167,7 @@ SpMat collapseKff(int a, int mp, int after, long& nmp) {
   }
   nmp = long(an.mpData.size());
   const int nDoF = an.mesh.nDoF();
-  elemMPinfo(an.mesh, an.mpData, an.fem);
+  elemMPinfo(an.mesh, an.mpData);
   const std::vector<int> fd = detFDoFsLone(an.mesh, an.mpData);
   DetMPsOut mps;
   mps.Kt = stiffnessPattern(nDoF, an.mpData);
