@@ -1,14 +1,22 @@
 //--------------------------------------------------------------------------
 // detMPs — internal force and stiffness of all material points (the point loop)
 //--------------------------------------------------------------------------
-// For each point ([AMPLE] sec 2): dF = I + sum du (x) dS/dX~ (eq 17), F = dF Fn,
-// b_e,tr = dF exp(2 eps_e,n) dF' (eqs 7-9), eps_e,tr = ln(b_e,tr)/2 (eq 10), tau, D
-// from Hooke3d / VMconst (eqs 5, 11), sigma = tau / det F (eq 6); k_p, f_p (eqs 14-18);
-// then Kt = A k_p, fint = A f_p (eqs 30-31). form = PC: [Lagrangian] eqs 18-23;
-// form = SS: small strain, [Boundaries] eqs 2-3, 6, 8-10 (docs/algorithm.md).
-// Inputs:  uvw (nDoF) the step's displacement increment · mpData · form
+// [AMPLE] sec 2, the updated Lagrangian form, as AMPLE's detMPs.m: for each point
+//   dF = I + sum_v du_v (x) dS_v/dX~                     eq 17
+//   F = dF Fn,  b_e,tr = dF exp(2 eps_e,n) dF'            eqs 7-9
+//   eps_e,tr = ln(b_e,tr) / 2                             eq 10
+//   tau, D, eps_e = Hooke3d or VMconst(eps_e,tr)          eqs 5, 11
+//   sigma = tau / det F                                   eq 6
+//   A = formULstiff(F, D, sigma, b_e,tr)                  [Lagrangian] eq A.1 (4 x 4 in plane)
+//   G: the strain-displacement matrix of dS/dx = dF^-T dS/dX~ (eq 18), G u_p = grad du
+//   V_p = det(dF) V_p^n                                   eq 15
+//   k_p = G' A G V_p,  f_p = G' sigma V_p                 eqs 14, 16
+// then Kt = A k_p, fint = A f_p (eqs 30-31). The other formulations, PC
+// ([Lagrangian] eqs 18-23) and SS ([Boundaries] sec 2), are point loops of their
+// own (ample/formulations/), which the program chooses.
+// Inputs:  uvw (nDoF) the step's displacement increment · mpData · form (UL)
 // Outputs: out.fint (nDoF) · out.Kt (nDoF x nDoF) · mpData (F, sig, epsE)
-// Tests:   tests/test_detMPs.cpp, tests/test_formULstiff.cpp, tests/test_smallStrain.cpp
+// Tests:   tests/test_detMPs.cpp, tests/test_pointLoops.cpp, tests/test_formULstiff.cpp
 //--------------------------------------------------------------------------
 #pragma once
 #include <Eigen/SparseCore>
@@ -33,14 +41,5 @@ DetMPsOut detMPs(const Eigen::VectorXd& uvw, std::vector<MaterialPoint>& mpData,
                  Formulation form = Formulation::UL);
 using PointLoop = void (*)(const Eigen::VectorXd& uvw, std::vector<MaterialPoint>& mpData, Formulation form,
                            DetMPsOut& out);  // detMPs, or a replacement of it as a whole
-
-// the steps of the loop body, for detMPsFast:
-// exp(2 eps_e,n) of a point (eq 9), its elastic left Cauchy-Green tensor at the start of the step
-Matrix3d elasticLeftCG(const MaterialPoint& mp);
-// the point's state (F, sigma, eps_e) from uvw; f_p added into fint; k_p into ke (eqs 5-18, 14, 16)
-void addPoint(const Eigen::VectorXd& uvw, const Matrix3d& bEn, Formulation form, MaterialPoint& mp,
-              Eigen::VectorXd& fint, PointStiffness& ke);
-// k_p as entries (row, column, value) of Kt (eq 30), appended to Kt's list
-void assemble(const MaterialPoint& mp, const PointStiffness& ke, std::vector<Eigen::Triplet<double>>& Kt);
 
 }  // namespace ample

@@ -33,7 +33,7 @@
 #include "ample/detExtForce.h"
 #include "ample/detFDoFs.h"
 #include "ample/remedies/loneNodes.h"
-#include "ample/detMPs.h"
+#include "ample/formulations/detMPsForm.h"
 #include "ample/cpdi/elemMPinfoCPDI.h"
 #include "ample/errors.h"
 #include "formCoord2D.h"
@@ -117,7 +117,7 @@ static Eigen::VectorXd linearSolution(Analysis& an) {
   elemMPinfoCPDI(an.mesh, an.mpData);
   const Eigen::VectorXd fext = detExtForce(nDoF, an.g, an.mpData);
   const std::vector<int> fd = detFDoFsLone(an.mesh, an.mpData);
-  const DetMPsOut mps = detMPs(Eigen::VectorXd::Zero(nDoF), an.mpData, Formulation::SS);
+  const DetMPsOut mps = detMPsOf(Eigen::VectorXd::Zero(nDoF), an.mpData, Formulation::SS);
   return linSolve(an.mesh.bc, mps.Kt, fext, 1, fd).duvw;
 }
 

@@ -2,6 +2,7 @@
 #pragma once
 #include "setups/program/run.h"
 #include "ample/detMPs.h"
+#include "ample/formulations/detMPsForm.h"
 #include "ample/elemMPinfo.h"
 #include "setups/formCoord2D.h"
 #include "setups/setupHelpers.h"
@@ -88,7 +89,7 @@ inline Eigen::VectorXd randomUvw(const Analysis& an, double size, unsigned seed)
 // relative difference |Kt - Kfd| / |Kt| between the assembled tangent and central
 // differences of the assembled internal force, over the columns of the linked dofs
 inline double tangentError(Analysis& an, const Eigen::VectorXd& uvw, Formulation form) {
-  const Eigen::MatrixXd Kt = Eigen::MatrixXd(detMPs(uvw, an.mpData, form).Kt);
+  const Eigen::MatrixXd Kt = Eigen::MatrixXd(detMPsOf(uvw, an.mpData, form).Kt);
   Eigen::MatrixXd Kfd = Eigen::MatrixXd::Zero(Kt.rows(), Kt.cols());
   const double d = 1e-7;
   for (int c = 0; c < uvw.size(); ++c) {
@@ -96,7 +97,7 @@ inline double tangentError(Analysis& an, const Eigen::VectorXd& uvw, Formulation
     Eigen::VectorXd up = uvw, um = uvw;
     up(c) += d;
     um(c) -= d;
-    Kfd.col(c) = (detMPs(up, an.mpData, form).fint - detMPs(um, an.mpData, form).fint) / (2 * d);
+    Kfd.col(c) = (detMPsOf(up, an.mpData, form).fint - detMPsOf(um, an.mpData, form).fint) / (2 * d);
   }
   return (Kt - Kfd).norm() / Kt.norm();
 }

@@ -237,7 +237,7 @@ TEST_SUITE("detFDoFs") {
     elemMPinfo(an.mesh, an.mpData);                    // step 34 as the analysis starts it
     const std::vector<int> fd = detFDoFsLone(an.mesh, an.mpData), fdAll = activeCellDoFs(an.mesh);
     CHECK(fd.size() == fdAll.size() - 2);
-    const SpMat Kt = detMPs(Eigen::VectorXd::Zero(an.mesh.nDoF()), an.mpData, an.formulation).Kt;
+    const SpMat Kt = detMPsOf(Eigen::VectorXd::Zero(an.mesh.nDoF()), an.mpData, an.formulation).Kt;
     CHECK(rankOf(Kt, fd) == int(fd.size()));
     CHECK(rankOf(Kt, fdAll) == int(fdAll.size()) - 2);
   }

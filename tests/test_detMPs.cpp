@@ -54,7 +54,7 @@ TEST_SUITE("detMPs") {
       testing::prestrain(an.mpData, 4);
       elemMPinfo(an.mesh, an.mpData);
       DetMPsOut out;
-      detMPs(Eigen::VectorXd::Zero(an.mesh.nDoF()), an.mpData, form, out);
+      pointLoopOf(form)(Eigen::VectorXd::Zero(an.mesh.nDoF()), an.mpData, form, out);  // UL: detMPs
       const double E = 1e6, nu = 0.3, lam = E * nu / ((1 + nu) * (1 - 2 * nu)), mu = E / (2 * (1 + nu));
       double worst = 0.0;
       for (const MaterialPoint& mp : an.mpData) {
@@ -134,24 +134,25 @@ TEST_SUITE("detMPs") {
     return an;
   }
 
-  TEST_CASE("detMPsFast: on 1, 2, 3 and 4 threads it gives detMPs' fint, Kt and point states bit for bit") {
+  TEST_CASE("detMPsFast: on 2, 3 and 4 threads it gives its own one-thread fint, Kt and point states bit for bit (UL, PC, SS)") {
 #ifndef _OPENMP
     MESSAGE("built without AMPLE_OPENMP: the point loop is serial, nothing to compare");
 #else
     // 16,384 points in 32 x 32 cells; and 9,216 crowded into 4 x 4 cells (24 x 24 each), where
-    // a thread owns a few nodes and most points link two threads' nodes
+    // a thread owns a few nodes and most points link two threads' nodes. (Against the plain
+    // loops, within round-off: tests/test_pointLoops.cpp.)
     for (const Analysis& an : {largeBlock(32), largeBlock(4, 24)}) {
       const int np = int(an.mpData.size());
       CAPTURE(np);
       REQUIRE(np >= 4 * pointsPerThread());
       const Eigen::VectorXd uvw = testing::randomUvw(an, 0.05, 5);
       const int before = omp_get_max_threads();
-      for (Formulation form : {Formulation::UL, Formulation::PC}) {
-        std::vector<DetMPsOut> out(5);                     // 0: detMPs, nt: detMPsFast on nt threads
+      for (Formulation form : {Formulation::UL, Formulation::PC, Formulation::SS}) {
+        CAPTURE(int(form));
+        std::vector<DetMPsOut> out(5);                     // nt: detMPsFast on nt threads
         std::vector<std::vector<MaterialPoint>> mps(5, an.mpData);
         for (double pass : {1.0, 0.5}) {                   // a second pass: what the step's plan kept
           CAPTURE(pass);
-          detMPs(pass * uvw, mps[0], form, out[0]);
           for (int nt = 1; nt <= 4; ++nt) {
             omp_set_num_threads(nt);
             REQUIRE(pointThreads(int(an.mpData.size())) == std::min(nt, np / pointsPerThread()));
@@ -159,15 +160,15 @@ TEST_SUITE("detMPs") {
           }
           omp_set_num_threads(before);
           CHECK(out[1].plan->blocked);                       // the fast assembly did run
-          CHECK(out[0].Kt.norm() > 0);
-          for (int nt = 1; nt <= 4; ++nt) {
+          CHECK(out[1].Kt.norm() > 0);
+          for (int nt = 2; nt <= 4; ++nt) {
             CAPTURE(nt);
-            CHECK((out[nt].fint.array() == out[0].fint.array()).all());
-            CHECK((out[nt].Kt.coeffs() == out[0].Kt.coeffs()).all());
+            CHECK((out[nt].fint.array() == out[1].fint.array()).all());
+            CHECK((out[nt].Kt.coeffs() == out[1].Kt.coeffs()).all());
             bool same = true;
-            for (size_t p = 0; p < mps[0].size(); ++p)
-              same = same && mps[nt][p].sig == mps[0][p].sig && mps[nt][p].F == mps[0][p].F &&
-                     mps[nt][p].epsE == mps[0][p].epsE;
+            for (size_t p = 0; p < mps[1].size(); ++p)
+              same = same && mps[nt][p].sig == mps[1][p].sig && mps[nt][p].F == mps[1][p].F &&
+                     mps[nt][p].epsE == mps[1][p].epsE;
             CHECK(same);
           }
         }
@@ -335,7 +336,7 @@ TEST_SUITE("detMPs") {
       CAPTURE(size);
       std::vector<MaterialPoint> pts = start;
       const Eigen::VectorXd u = handUvw(size);
-      const DetMPsOut out = detMPs(u, pts, Formulation::SS);
+      const DetMPsOut out = detMPsOf(u, pts, Formulation::SS);
       Eigen::VectorXd f;
       Eigen::MatrixXd K;
       handSS(start, u, f, K);
@@ -345,7 +346,7 @@ TEST_SUITE("detMPs") {
       Eigen::VectorXd sum = Eigen::VectorXd::Zero(18);
       for (const MaterialPoint& mp : start) {
         std::vector<MaterialPoint> one = {mp};
-        sum += detMPs(u, one, Formulation::SS).fint;
+        sum += detMPsOf(u, one, Formulation::SS).fint;
       }
       CHECK((sum - f).norm() <= 1e-12 * f.norm());
     }
@@ -357,7 +358,7 @@ TEST_SUITE("detMPs") {
     G << 2e-3, -1e-3, 5e-4, -1.5e-3;
     Eigen::VectorXd u(18);
     for (int n = 0; n < 9; ++n) u.segment<2>(2 * n) = G * Vector2d(n % 3, n / 3);
-    const DetMPsOut out = detMPs(u, pts, Formulation::SS);
+    const DetMPsOut out = detMPsOf(u, pts, Formulation::SS);
     Eigen::Matrix2d M = Eigen::Matrix2d::Zero(), expected = Eigen::Matrix2d::Zero();
     Vector2d net = Vector2d::Zero();
     for (int n = 0; n < 9; ++n) {
@@ -382,7 +383,7 @@ TEST_SUITE("detMPs") {
     }
     const Eigen::VectorXd u = handUvw(5e-3);
     std::vector<MaterialPoint> work = pts;
-    const Eigen::MatrixXd Kt = Eigen::MatrixXd(detMPs(u, work, form).Kt);
+    const Eigen::MatrixXd Kt = Eigen::MatrixXd(detMPsOf(u, work, form).Kt);
     Eigen::MatrixXd Kfd(18, 18);
     const double d = 1e-7;
     for (int c = 0; c < 18; ++c) {
@@ -390,7 +391,7 @@ TEST_SUITE("detMPs") {
       up(c) += d;
       um(c) -= d;
       std::vector<MaterialPoint> a = pts, b = pts;
-      Kfd.col(c) = (detMPs(up, a, form).fint - detMPs(um, b, form).fint) / (2 * d);
+      Kfd.col(c) = (detMPsOf(up, a, form).fint - detMPsOf(um, b, form).fint) / (2 * d);
     }
     return (Kt - Kfd).norm() / Kt.norm();
   }

@@ -85,7 +85,7 @@ TEST_SUITE("detMPsFbar") {
         for (int n = 0; n < an.mesh.nodes(); ++n)
           uvw.segment<2>(2 * n) = Hh * an.mesh.coord.row(n).transpose();
         std::vector<MaterialPoint> plain = an.mpData, barred = an.mpData;
-        const Eigen::VectorXd f0 = detMPs(uvw, plain, form).fint;
+        const Eigen::VectorXd f0 = detMPsOf(uvw, plain, form).fint;
         const Eigen::VectorXd f1 = fbar(an, uvw, barred, form).fint;
         CHECK(relDiff(f1, f0) < 1e-12);
         double dsig = 0, sigMax = 0, dF = 0;
@@ -109,7 +109,7 @@ TEST_SUITE("detMPsFbar") {
         elemMPinfo(an.mesh, an.mpData);
         const Eigen::VectorXd uvw = testing::randomUvw(an, 0.02, 13);
         std::vector<MaterialPoint> plain = an.mpData, barred = an.mpData;
-        const DetMPsOut a = detMPs(uvw, plain, form), b = fbar(an, uvw, barred, form);
+        const DetMPsOut a = detMPsOf(uvw, plain, form), b = fbar(an, uvw, barred, form);
         CHECK(relDiff(b.fint, a.fint) < 1e-12);
         CHECK(relDiff(Eigen::MatrixXd(b.Kt), Eigen::MatrixXd(a.Kt)) < 1e-12);
       }

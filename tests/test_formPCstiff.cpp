@@ -1,13 +1,13 @@
 // Tests of formPCstiff ([Lagrangian] appendix A.2), the consistent tangent of the
 // previously converged (PC) formulation: at the material level against central
-// differences of P~(dF) = tau dF^-T / Jn, and assembled by detMPs(..., PC)
+// differences of P~(dF) = tau dF^-T / Jn, and assembled by detMPsForm (PC)
 // against central differences of the PC internal force. PC and UL describe the
 // same equilibrium in two frames, so their internal forces (and hence their
 // tangents) agree for the same increment.
 #include "setups/program/run.h"
 #include "ample/detFDoFs.h"
 #include "ample/remedies/loneNodes.h"
-#include "ample/detMPs.h"
+#include "ample/formulations/detMPsForm.h"
 #include "ample/elemMPinfo.h"
 #include "ample/stiffness/formPCstiff.h"
 #include "ample/stiffness/tensorOps.h"
@@ -125,7 +125,7 @@ TEST_SUITE("formPCstiff") {
         Analysis an = prestrainedBlock(t, c);
         const Eigen::VectorXd uvw = testing::randomUvw(an, 0.02, 11);
         if (c == CmType::VonMises) {  // every point must be yielding for a smooth FD
-          detMPs(uvw, an.mpData, Formulation::PC);
+          detMPsOf(uvw, an.mpData, Formulation::PC);
           requireAllYielding(an.mpData);
         }
         CHECK(pcTangentError(an, uvw) < 1e-6);
@@ -139,7 +139,7 @@ TEST_SUITE("formPCstiff") {
         CAPTURE(int(c));
         Analysis an = prestrainedBlock(t, c);
         const Eigen::VectorXd uvw = testing::randomUvw(an, 0.02, 11);
-        const Eigen::VectorXd fPC = detMPs(uvw, an.mpData, Formulation::PC).fint;
+        const Eigen::VectorXd fPC = detMPsOf(uvw, an.mpData, Formulation::PC).fint;
         const Eigen::VectorXd fUL = detMPs(uvw, an.mpData, Formulation::UL).fint;
         REQUIRE(fUL.norm() > 0.0);
         CHECK((fPC - fUL).norm() <= 1e-12 * fUL.norm());
@@ -153,7 +153,7 @@ TEST_SUITE("formPCstiff") {
         CAPTURE(int(c));
         Analysis an = prestrainedBlock(t, c);
         const Eigen::VectorXd uvw = testing::randomUvw(an, 0.02, 11);
-        const Eigen::MatrixXd KPC = Eigen::MatrixXd(detMPs(uvw, an.mpData, Formulation::PC).Kt);
+        const Eigen::MatrixXd KPC = Eigen::MatrixXd(detMPsOf(uvw, an.mpData, Formulation::PC).Kt);
         const Eigen::MatrixXd KUL = Eigen::MatrixXd(detMPs(uvw, an.mpData, Formulation::UL).Kt);
         CHECK((KPC - KUL).norm() <= 1e-10 * KUL.norm());
       }
@@ -217,7 +217,7 @@ TEST_SUITE("formPCstiff") {
     elemMPinfo(an.mesh, start);                               // the basis of step 11
     an.mpData = start;
     std::vector<MaterialPoint> mpUL = an.mpData, mpPC = an.mpData;
-    const DetMPsOut ul = detMPs(uvw, mpUL, Formulation::UL), pc = detMPs(uvw, mpPC, Formulation::PC);
+    const DetMPsOut ul = detMPs(uvw, mpUL, Formulation::UL), pc = detMPsOf(uvw, mpPC, Formulation::PC);
     const Eigen::MatrixXd K(ul.Kt), KPC(pc.Kt);
     CHECK((pc.fint - ul.fint).norm() <= 1e-13 * ul.fint.norm());
     CHECK((KPC - K).norm() <= 1e-13 * K.norm());

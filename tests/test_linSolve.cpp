@@ -65,7 +65,7 @@ CollapseStep1 collapseStep1() {
   CollapseStep1 c{SpMat(), detFDoFsLone(an.mesh, an.mpData)};
   DetMPsOut mps;
   mps.Kt = stiffnessPattern(nDoF, an.mpData);
-  detMPs(Eigen::VectorXd::Zero(nDoF), an.mpData, an.formulation, mps);
+  pointLoopOf(an.formulation)(Eigen::VectorXd::Zero(nDoF), an.mpData, an.formulation, mps);
   c.Kt = mps.Kt;
   return c;
 }

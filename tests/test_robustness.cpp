@@ -143,10 +143,16 @@ TEST_SUITE("robustness") {
     Eigen::VectorXd applied = Eigen::VectorXd::Zero(an.mesh.nDoF());
     bool refuse = true;                                      // the first half fails once
     struct Halves : Hooks {                                  // the squeeze's halves, the first refused once
+      PointLoop pointLoop;                                   // SS: ample/formulations/
       bool& refuse;
       std::vector<Done>& done;
       Eigen::VectorXd& applied;
-      Halves(bool& r, std::vector<Done>& d, Eigen::VectorXd& a) : refuse(r), done(d), applied(a) {}
+      Halves(PointLoop l, bool& r, std::vector<Done>& d, Eigen::VectorXd& a)
+          : pointLoop(l), refuse(r), done(d), applied(a) {}
+      void detMPs(const Eigen::VectorXd& uvw, std::vector<MaterialPoint>& mpData, Formulation form,
+                  DetMPsOut& mps) const override {
+        pointLoop(uvw, mpData, form, mps);
+      }
       void checkConverged(const Analysis& a, const Increment& inc, int NRit, double fErr,
                           const Eigen::VectorXd& uvw, const Eigen::VectorXd& load) const override {
         if (refuse && inc.depth == 1 && inc.lf0 == 0.0) {
@@ -163,7 +169,7 @@ TEST_SUITE("robustness") {
         retryStep(a, inc, e, *this, true);
       }
     };
-    const Halves hooks(refuse, done, applied);
+    const Halves hooks(pointLoopOf(an.formulation), refuse, done, applied);
     retryStep(an, {1, 0.0, 0.25, 1.0, 0, ""}, NewtonFailure("the whole step refused by the test", Failure::NotConverged),
               hooks, true);
     REQUIRE(done.size() == 3);                               // two quarters, then the second half

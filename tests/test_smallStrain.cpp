@@ -5,7 +5,7 @@
 // UL as the load goes to zero, and the compaction column against [AMPLE] eq 36.
 // The expected stresses are written here from Lame constants (not with Hooke3d).
 #include "setups/program/run.h"
-#include "ample/detMPs.h"
+#include "ample/formulations/detMPsForm.h"
 #include "ample/remedies/loadSteps.h"
 #include "ample/updateMPs.h"
 #include "testProblems.h"
@@ -65,7 +65,7 @@ TEST_SUITE("smallStrain") {
         elemMPinfo(an.mesh, an.mpData);
         const Eigen::VectorXd uvw = testing::randomUvw(an, 0.02, 11);
         if (c == CmType::VonMises) {                            // every point on the surface
-          detMPs(uvw, an.mpData, Formulation::SS);
+          detMPsOf(uvw, an.mpData, Formulation::SS);
           for (const MaterialPoint& mp : an.mpData) {
             const double p = mp.sig.head<3>().sum() / 3.0;
             const double rho = std::sqrt((mp.sig.head<3>().array() - p).square().sum() +
@@ -90,7 +90,7 @@ TEST_SUITE("smallStrain") {
         Eigen::Matrix2d H;
         H << 1.0, 0.4, -0.3, -0.5;                              // not symmetric: a rotation too
         H *= size;
-        const DetMPsOut out = detMPs(linearField(an.mesh, H), an.mpData, Formulation::SS);
+        const DetMPsOut out = detMPsOf(linearField(an.mesh, H), an.mpData, Formulation::SS);
         const Vector6d sigA = handStress(H, 1e6, 0.3);
         for (const MaterialPoint& mp : an.mpData) {
           CHECK((mp.sig - sigA).norm() <= 1e-12 * sigA.norm());
@@ -108,7 +108,7 @@ TEST_SUITE("smallStrain") {
     Eigen::Matrix2d H;
     H << 2e-3, 1e-3, 0.0, -1e-3;
     const Eigen::VectorXd uvw = linearField(an.mesh, H);
-    detMPs(uvw, an.mpData, Formulation::SS);
+    detMPsOf(uvw, an.mpData, Formulation::SS);
     std::vector<Vector2d> X;
     for (const MaterialPoint& mp : an.mpData) X.push_back(mp.mpC);
     updateMPs(an.mesh, uvw, an.mpData);    // the converged step
@@ -120,7 +120,7 @@ TEST_SUITE("smallStrain") {
       CHECK((mp.mpC - X[p] - H * X[p]).norm() <= 1e-15 * 4);   // eq 33 with u = H X
     }
     elemMPinfo(an.mesh, an.mpData);                             // a trial state of a next step
-    detMPs(testing::randomUvw(an, 0.01, 9), an.mpData, Formulation::SS);
+    detMPsOf(testing::randomUvw(an, 0.01, 9), an.mpData, Formulation::SS);
     restoreConverged(an.mpData);
     for (const MaterialPoint& mp : an.mpData) CHECK((mp.sig - sigA).norm() <= 1e-12 * sigA.norm());
   }

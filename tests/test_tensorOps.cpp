@@ -1,5 +1,6 @@
 // Tests of tensorOps: Voigt <-> tensor round trips, exponential and logarithm
-// of symmetric tensors ([AMPLE] eqs 9-10).
+// of symmetric tensors ([AMPLE] eqs 9-10), and the closed-form in-plane ones against them.
+#include "ample/stiffness/inPlaneEigen.h"
 #include "ample/stiffness/tensorOps.h"
 #include <doctest/doctest.h>
 #include <cmath>
@@ -67,5 +68,22 @@ TEST_SUITE("tensorOps") {
     const Matrix3d B = Q * lam.asDiagonal() * Q.transpose();
     const Matrix3d expected = Q * Vector3d(lam.array().exp()).asDiagonal() * Q.transpose();
     CHECK((symExp(B) - expected).norm() <= 1e-13 * expected.norm());
+  }
+  TEST_CASE("inPlaneEigen: inPlaneExp and inPlaneLog of a plane-strain tensor equal symExp and symLog to round-off / and of a full 3 x 3 one") {
+    const double a = 0.4;
+    Matrix3d Q = Matrix3d::Identity();                // a rotation in the plane
+    Q.topLeftCorner<2, 2>() << std::cos(a), -std::sin(a), std::sin(a), std::cos(a);
+    for (const Vector3d& lam : {Vector3d(0.3, -0.6, 0.1), Vector3d(0.2, 0.2, -0.05), Vector3d(1e-3, -2e-3, 5e-4)}) {
+      CAPTURE(lam.transpose());
+      const Matrix3d B = Q * lam.asDiagonal() * Q.transpose();      // block diagonal
+      const Matrix3d expB = Q * Vector3d(lam.array().exp()).asDiagonal() * Q.transpose();
+      CHECK((inPlaneExp(B) - expB).norm() <= 1e-14 * expB.norm());
+      CHECK((inPlaneExp(B) - symExp(B)).norm() <= 1e-14 * expB.norm());
+      CHECK((inPlaneLog(expB) - B).norm() <= 1e-14 * expB.norm());
+      CHECK((inPlaneLog(inPlaneEigen(expB)) - symLog(expB)).norm() <= 1e-14 * expB.norm());
+    }
+    const Matrix3d A = spd();                         // not block diagonal: the full decomposition
+    CHECK((inPlaneExp(inPlaneLog(A)) - A).norm() <= 1e-13 * A.norm());
+    CHECK((inPlaneLog(A) - symLog(A)).norm() <= 1e-14 * A.norm());
   }
 }

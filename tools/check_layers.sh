@@ -10,7 +10,7 @@
 #   3 core          ample/*.h ample/*.cpp (the loop, its hooks and the functions it calls:
 #                   elemMPinfo, detExtForce, detFDoFs, linSolve, detMPs, updateMPs)
 #   4 extensions    the rooms ample/solver/ remedies/ boundaries/ fast/ domains/ locking/
-#                   initial/ cpdi/ meshes/ (each with a README.md; they may include the
+#                   initial/ cpdi/ meshes/ formulations/ (each with a README.md; they may include the
 #                   core and each other, never the core them: a core file, layers 0-3, that
 #                   includes a room is named; ample/fast/, a core function replaced as a
 #                   whole for large runs, is included by setups/program/* only, which
@@ -33,7 +33,7 @@ layer() {  # layer of a project file, -1 for one outside the layered tree
     ample/stiffness/*) echo 1 ;;
     ample/basis/*) echo 2 ;;
     ample/solver/*|ample/remedies/*|ample/boundaries/*|ample/fast/*|ample/domains/*|ample/locking/*|\
-    ample/initial/*|ample/cpdi/*|ample/meshes/*) echo 4 ;;
+    ample/initial/*|ample/cpdi/*|ample/meshes/*|ample/formulations/*) echo 4 ;;
     setups/program/*) echo 7 ;;
     ample/*/*) echo -1 ;;   # a folder of ample/ without a layer
     ample/*) echo 3 ;;

@@ -6,7 +6,9 @@
 # ample, as tools/debug.sh does), runs SETUP under gdb in batch mode, stops
 # where tools/debug.sh stops by default (the line after
 # `MaterialPoint& mp = mpData[p];` in ample/detMPs.cpp: the first point of the
-# first Newton-Raphson pass), then repeats `step` until the frame is in FUNC,
+# first Newton-Raphson pass), or at --from WHERE (gdb's `break WHERE`: detMPs,
+# the function's entry), then repeats `step` until the frame is in FUNC, or at
+# FILE:LINE (--to detMPs.cpp:51: e.g. the point's assembly),
 # at most 5000 steps (tools/gdb/count_steps.py, command count-steps), and
 # prints each stop as gdb shows it to whoever steps by hand, then the number
 # of steps, the functions stopped in on the way, in the order first met, with
@@ -17,22 +19,24 @@
 # lines when libc6-dbg is installed); functions without line information are
 # passed over as gdb always does.
 #
-# Usage:   tools/count_steps.sh SETUP [name=value ...] --to FUNC [--limit N] [--no-build]
+# Usage:   tools/count_steps.sh SETUP [name=value ...] --to FUNC|FILE:LINE [--from WHERE]
+#                                 [--limit N] [--no-build]
 #   e.g.   tools/count_steps.sh compaction --to Hooke3d
-#          tools/count_steps.sh collapse a=1 --to VMconst
+#          tools/count_steps.sh collapse a=1 --to VMconst --from detMPs
 # The run writes to build/debug/output/SETUP (no VTK, --quiet).
 #--------------------------------------------------------------------------
 set -euo pipefail
 root="$(cd "$(dirname "$0")/.." && pwd)"
-usage="usage: tools/count_steps.sh SETUP [name=value ...] --to FUNC [--limit N] [--no-build]"
+usage="usage: tools/count_steps.sh SETUP [name=value ...] --to FUNC|FILE:LINE [--from WHERE] [--limit N] [--no-build]"
 
 [ $# -ge 1 ] && [ "${1#-}" = "$1" ] || { echo "$usage" >&2; exit 2; }
 setup="$1"; shift
-to="" limit=5000 build=1 args=()
+to="" from="" limit=5000 build=1 args=()
 while [ $# -gt 0 ]; do
   case "$1" in
     --to)       [ $# -ge 2 ] || { echo "$usage" >&2; exit 2; }; to="$2"; shift 2 ;;
     --limit)    [ $# -ge 2 ] || { echo "$usage" >&2; exit 2; }; limit="$2"; shift 2 ;;
+    --from)     [ $# -ge 2 ] || { echo "$usage" >&2; exit 2; }; from="$2"; shift 2 ;;
     --no-build) build=0; shift ;;
     *)          args+=("$1"); shift ;;
   esac
@@ -54,7 +58,7 @@ exe="$root/build/debug/ample"
 
 # the stop of tools/debug.sh: the first line inside the point loop of detMPs
 line=$(grep -n 'MaterialPoint& mp = mpData\[p\];' "$root/ample/detMPs.cpp" | tail -1 | cut -d: -f1)
-where="detMPs.cpp:$((line + 1))"
+where="${from:-detMPs.cpp:$((line + 1))}"
 
 mkdir -p "$root/build/debug/output"
 gdb -q -nx -batch -x "$root/tools/gdb/ample.gdb" -x "$root/tools/gdb/count_steps.py" \

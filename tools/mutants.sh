@@ -58,8 +58,10 @@ MUTANTS=(
   "ib-force-sign|ample/boundaries/ibStiffness.cpp|s/r = t\.f - t\.k \* ue;/r = t.k * ue - t.f;/"
   "ib-empty-prescribed-silent|ample/boundaries/ibStiffness.cpp|s/      throw RunError\(\"implicit boundary \"/      if (false) throw RunError(\"implicit boundary \"/"
   # formulation=SS ([Boundaries]): grad du as (I + grad du) - I; the volume of the moved configuration
-  "ss-grad-via-dF|ample/detMPs.cpp|s/plusGradDu\(Matrix3d::Zero\(\), uvw, mp\), mp\)/plusGradDu(Matrix3d::Identity(), uvw, mp) - Matrix3d::Identity(), mp)/"
-  "ss-volume-dF|ample/detMPs.cpp|s/t\.Vp = mp\.vp; +\/\/ V_p = V_p0/t.Vp = (Matrix3d::Identity() + H).determinant() * mp.vp;/"
+  "ss-grad-via-dF|ample/formulations/detMPsForm.cpp|s/: smallStrain\(H, mp\);/: smallStrain(dF.topLeftCorner<2, 2>() - Eigen::Matrix2d::Identity(), mp);/"
+  "ss-volume-dF|ample/formulations/detMPsForm.cpp|s/mp\.vp\}; +\/\/ V_p = V_p0/(Eigen::Matrix2d::Identity() + H).determinant() * mp.vp};/"
+  # the fast loop's copy of eq 6 (tests/test_pointLoops.cpp against the plain loops)
+  "fast-cauchy-no-J|ample/fast/addPoint.cpp|s/cm\.Ksig \/ mp\.F\.determinant\(\)/cm.Ksig/"
 )
 
 SRC=$(cd "$(dirname "$0")/.." && pwd)

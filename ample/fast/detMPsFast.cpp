@@ -1,12 +1,13 @@
 //--------------------------------------------------------------------------
-// detMPsFast — detMPs for large runs: the same numbers, faster
+// detMPsFast — the point loop of an optimised build: the same equations, faster
 //--------------------------------------------------------------------------
 // See detMPsFast.h.
 //--------------------------------------------------------------------------
 #include "detMPsFast.h"
+#include "addPoint.h"
+#include "ample/formulations/detMPsForm.h"
 #include "ample/solver/pointShares.h"
 #include "ample/solver/stiffnessPattern.h"
-#include "ample/stiffness/tensorOps.h"
 #include <algorithm>
 #include <exception>
 
@@ -176,7 +177,7 @@ std::vector<Matrix3d> elasticLeftCGs(const std::vector<MaterialPoint>& mpData) {
 void detMPsFast(const Eigen::VectorXd& uvw, std::vector<MaterialPoint>& mpData, Formulation form,
                 DetMPsOut& out) {
   const int nDoF = int(uvw.size()), np = int(mpData.size());
-  if (np < fastFrom()) return detMPs(uvw, mpData, form, out);  // small: the core loop
+  if (np < fastFrom()) return pointLoopOf(form)(uvw, mpData, form, out);  // small: the plain loop
   if (out.Kt.rows() != nDoF || out.Kt.nonZeros() == 0) out.Kt = stiffnessPattern(nDoF, mpData);
   if (!out.plan) out.plan = std::make_shared<PointLoopPlan>();
   PointLoopPlan& plan = *out.plan;

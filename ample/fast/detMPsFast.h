@@ -1,10 +1,12 @@
 //--------------------------------------------------------------------------
-// detMPsFast — detMPs for large runs: the same numbers, faster
+// detMPsFast — the point loop of an optimised build: the same equations, faster
 //--------------------------------------------------------------------------
-// Replaces detMPs (ample/detMPs.h) as a whole where the program chooses it
-// (RunOptions::pointLoop; program/cli.cpp, chosen in program/run.cpp), with no equation of its own: the
-// same addPoint for every point, the same sums in the same order. What it adds:
-//   runs of fewer than fastFrom() points (fastFrom.h): detMPs itself;
+// Replaces the point loop (detMPs, ample/detMPs.h; detMPsForm for PC and SS,
+// ample/formulations/) as a whole where the program chooses it
+// (RunOptions::pointLoop, chosen in program/run.cpp), with no equation of its
+// own: addPoint (addPoint.h) for every point, the unrolled sums of eqs 14 and
+// 16. What it adds:
+//   runs of fewer than fastFrom() points (fastFrom.h): the plain loop itself;
 //   exp(2 eps_e,n) of every point once per load step (PointLoopPlan::bEn, eq 9);
 //   node-blocked assembly (addNodeBlocks) where Kt's pattern allows it, each
 //   point's blocks found in the pattern once per load step (PointLoopPlan::at);
@@ -15,7 +17,8 @@
 //   state written by the owner of its first node: bit for bit the serial
 //   loop on any number of threads.
 // Inputs/outputs: those of detMPs; out.plan (PointLoopPlan) kept for the step.
-// Tests:   tests/test_detMPs.cpp (against detMPs, bit for bit, 1-4 threads)
+// Tests:   tests/test_detMPs.cpp (1-4 threads, bit for bit), tests/test_pointLoops.cpp
+//          (against detMPs and detMPsForm, within 1e-12)
 //--------------------------------------------------------------------------
 #pragma once
 #include "ample/detMPs.h"

@@ -73,11 +73,11 @@ PointTerms fbarPoint(const Matrix2d& dF, double dJbar, MaterialPoint& mp) {
   const double dJ = dF.determinant();
   Matrix3d dFbar = Matrix3d::Identity();
   dFbar.topLeftCorner<2, 2>() = std::sqrt(dJbar / dJ) * dF;
-  const Matrix3d bEn = elasticLeftCG(mp);                       // exp(2 eps_e,n), eq 9
+  const Matrix3d bEn = inPlaneExp(2.0 * strainToTensor(mp.epsEn));  // exp(2 eps_e,n), eq 9
   mp.F = dFbar * mp.Fn;                                         // eq 7
   const Matrix3d BeT = dFbar * bEn * dFbar.transpose();         // eq 8
   const InPlaneEigen eig = inPlaneEigen(BeT);
-  const ConstOut cm = constitutive(tensorToStrain(0.5 * symLog(eig)), mp);  // eqs 10, 5, 11
+  const ConstOut cm = constitutive(tensorToStrain(0.5 * inPlaneLog(eig)), mp);  // eqs 10, 5, 11
   mp.epsE = cm.epsE;
   mp.sig = cm.Ksig / mp.F.determinant();                        // eq 6
   const Matrix4d A = formULstiff2D(mp.F, cm.D, mp.sig, BeT, dLogdB2D(eig));

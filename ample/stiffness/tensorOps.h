@@ -1,11 +1,11 @@
 //--------------------------------------------------------------------------
-// tensorOps — small helpers between 6-vectors and 3x3 symmetric tensors
+// tensorOps — Voigt 6-vectors and 3x3 tensors; exp and log of a symmetric tensor
 //--------------------------------------------------------------------------
 // Voigt order [xx yy zz xy yz zx]. Strain 6-vectors carry engineering shear
 // (gamma = 2 eps), stress 6-vectors the tensor components. symExp/symLog are
 // the exponential and logarithm of a symmetric tensor through its spectral
-// decomposition ([AMPLE] eqs 9-10); stretchTensor the right stretch U of
-// F = R U ([Lagrangian] eq 34).
+// decomposition A = V diag(lam) V', f(A) = V diag(f(lam)) V' ([AMPLE] eqs 9-10);
+// stretchTensor the right stretch U of F = R U ([Lagrangian] eq 34).
 // Inputs/outputs: 6-vectors and 3x3 matrices as named.
 // Tests:   tests/test_tensorOps.cpp
 //--------------------------------------------------------------------------
@@ -21,17 +21,5 @@ Vector6d tensorToStress(const Matrix3d& s);    // 3x3 -> 6
 Matrix3d symExp(const Matrix3d& A);            // exp of a symmetric tensor
 Matrix3d symLog(const Matrix3d& A);            // log of a symmetric positive definite tensor
 Matrix3d stretchTensor(const Matrix3d& F);     // U = sqrt(F'F), the right stretch tensor
-
-// the spectral decomposition of a plane-strain (block diagonal) symmetric tensor: the
-// in-plane block's eigenvalues lam and eigenvectors n (columns), and the zz entry. The
-// point loop decomposes the trial b_e once and takes both ln(b_e) (eq 10) and its
-// derivative (formULstiff2D) from it.
-struct InPlaneEigen {
-  Eigen::Vector2d lam;
-  Eigen::Matrix2d n;
-  double zz;
-};
-InPlaneEigen inPlaneEigen(const Matrix3d& A);  // A block diagonal (A_xz = A_yz = 0)
-Matrix3d symLog(const InPlaneEigen& e);        // = symLog(A) for that A, the same numbers
 
 }  // namespace ample

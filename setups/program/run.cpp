@@ -37,6 +37,7 @@
 #include "ample/domains/updateDomain.h"
 #include "ample/errors.h"
 #include "ample/fast/fastFrom.h"
+#include "ample/formulations/detMPsForm.h"
 #include "ample/initial/geostatic.h"
 #include "ample/locking/detMPsFbar.h"
 #include "ample/meshes/cellSearch.h"
@@ -109,7 +110,7 @@ struct RunHooks : Hooks {
     if (cpdi) basisLoop = elemMPinfoCPDI;                            // CPDI points (cpdi/), on either mesh
     else if (!an.mesh.regular()) basisLoop = elemMPinfoMesh;         // a general mesh (meshes/)
     if (large && opt.basisLoop) basisLoop = opt.basisLoop;           // each of them, faster
-    if (large) pointLoop = opt.pointLoop;
+    pointLoop = large ? opt.pointLoop : pointLoopOf(an.formulation);  // UL: detMPs (PC, SS: formulations/)
     x.Kff.choice = an.solver;                                        // SparseLU, or LDLT if symmetric
     chosen = large || an.solver != LinearSolver::LU;
   }

@@ -15,6 +15,8 @@
 //--------------------------------------------------------------------------
 #pragma once
 #include "ample/ample.h"
+#include "ample/fast/detMPsFast.h"
+#include "ample/fast/elemMPinfoFast.h"
 #include "plotting/makeVtkWriter.h"
 #include "runLog.h"
 #include "setups/setups.h"
@@ -32,12 +34,12 @@ struct RunOptions {
                               // does not move (--vtk-grid every; postPro.h)
   bool acceptFloor = false;  // accept a step whose residual stalled at its round-off floor
                              // (--accept-floor; ample/solver/roundOffFloor.h)
-  // the loops over points of a large run (ample/fast/: elemMPinfoFast, detMPsFast; the same
-  // numbers, faster), chosen once for runs of pointsPerThread() points or more in an optimised
-  // build (a Debug build, to step through, runs the serial ones at every size); by default the
-  // serial ones (basisLoop nullptr: the one the run's mesh and points need, run.cpp)
-  BasisLoop basisLoop = nullptr;
-  PointLoop pointLoop = detMPs;
+  // the loops over points of a run of fastFrom() points or more in an optimised build
+  // (ample/fast/: the same equations, faster); a Debug build, to step through, runs the
+  // core's elemMPinfo and the formulation's point loop at every size (pointLoopOf: detMPs
+  // for UL; ample/formulations/)
+  BasisLoop basisLoop = elemMPinfoFast;
+  PointLoop pointLoop = detMPsFast;
 };
 
 int ample(const Setup& setup, const Params& P, const RunOptions& opt);

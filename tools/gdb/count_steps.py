@@ -5,7 +5,9 @@
 #   count-steps FUNC [LIMIT]   repeat `step` from the current stop until the
 #                              selected frame is in FUNC (its name, or the last
 #                              part of a qualified name: Hooke3d matches
-#                              ample::Hooke3d), at most LIMIT steps (5000), then
+#                              ample::Hooke3d), or stands at FILE:LINE (FUNC of
+#                              that form: the file's name, detMPs.cpp:51), at
+#                              most LIMIT steps (5000), then
 #                              print the number of steps and the functions
 #                              stopped in on the way, in the order first met,
 #                              each with the times it was entered (the stops at
@@ -49,6 +51,16 @@ def at_entry(frame):
     return frame.pc() == ENTRY[block.start]
 
 
+def at_line(frame, target):
+    """whether the frame stands at target, FILE:LINE (FILE: the source file's name)"""
+    if ":" not in target:
+        return False
+    name, line = target.rsplit(":", 1)
+    sal = frame.find_sal()
+    return (sal.symtab is not None and os.path.basename(sal.symtab.filename) == name
+            and str(sal.line) == line)
+
+
 class CountSteps(gdb.Command):
     """count-steps FUNC [LIMIT]: repeat `step` until the frame is in FUNC (at most
 LIMIT steps, 5000), then print the steps and the functions passed through."""
@@ -86,7 +98,7 @@ LIMIT steps, 5000), then print the steps and the functions passed through."""
             seen[name][1] += 1
             if at_entry(frame):
                 seen[name][0] += 1
-            if name == target or short(name) == target:
+            if name == target or short(name) == target or at_line(frame, target):
                 reached = True
                 break
         sal = gdb.selected_frame().find_sal() if reached else None
