@@ -5,7 +5,7 @@
 // basis, the loads, the free dofs, the Newton-Raphson loop (eqs 29-35) and
 // the point update. Each "hooks." call is where an extension joins (hooks.h);
 // a plain run's hooks are the core functions (elemMPinfo, detFDoFs, solveFree,
-// detMPs, checkConverged, updateGIMPDomain) or empty and skipped (those marked "hook:").
+// detMPs, checkConverged, updateGIMPDomain) or empty (those marked "hook:").
 //--------------------------------------------------------------------------
 #include "ample.h"
 #include "detExtForce.h"
@@ -24,14 +24,14 @@ void solve(Analysis& an, const Hooks& hooks) {
   checkHooks(an, hooks);                                            // what an needs is there
   for (int lstp = 1; lstp <= an.lstps; ++lstp) {                    // load steps
     const Increment inc{lstp, double(lstp - 1) / an.lstps, double(lstp) / an.lstps};
-    if (hooks.startStep) hooks.startStep(an, inc);                  // hook: progress
+    hooks.startStep(an, inc);                                       // hook: progress
     try {
       loadStep(an, inc, hooks);                                     // below
     } catch (const RunError& e) {                                   // not converged, singular
-      if (!hooks.failedStep) throw;                                 // the paper: the run stops
-      hooks.failedStep(an, inc, e, hooks);                          // hook: retry (remedies)
+      hooks.failedStep(an, inc, e);                                 // hook: retry (remedies); a
+                                                                    // plain run's: the run stops
     }
-    if (hooks.endStep) hooks.endStep(an, inc);                      // hook: postPro, log
+    hooks.endStep(an, inc);                                         // hook: postPro, log
   }
 }
 
@@ -41,7 +41,7 @@ void loadStep(Analysis& an, const Increment& inc, const Hooks& hooks) {
   const int nDoF = mesh.nDoF();
   hooks.elemMPinfo(mesh, mpData, an.fem);                           // basis functions
   Eigen::VectorXd fext = detExtForce(nDoF, an.g, mpData) * inc.lf1; // external force
-  if (hooks.stepTerms) hooks.stepTerms(an, inc, fext);              // hook: body force, ...
+  hooks.stepTerms(an, inc, fext);                                   // hook: body force, ...
   const std::vector<BC> bc = scaled(mesh.bc, inc.share);            // the step's increments
   const std::vector<int> fd = hooks.detFDoFs(mesh, mpData);         // free dofs
   Eigen::VectorXd uvw = Eigen::VectorXd::Zero(nDoF), frct = Eigen::VectorXd::Zero(nDoF);
@@ -50,21 +50,21 @@ void loadStep(Analysis& an, const Increment& inc, const Hooks& hooks) {
   double fErr = 1.0;
   int NRit = 0;
   while ((fErr > an.tol && NRit < an.NRitMax) || NRit < 2) {       // Newton-Raphson
-    const LinSolveOut ls = linSolve(bc, mps.Kt, oobf, NRit, fd, hooks.solveFree);
+    const LinSolveOut ls = linSolve(bc, mps.Kt, oobf, NRit, fd, hooks);
     uvw += ls.duvw;                                                 // eq 29
     frct += ls.drct;
     hooks.detMPs(uvw, mpData, an.formulation, mps);                 // fint, Kt (eqs 30-31)
-    if (hooks.passTerms) hooks.passTerms(uvw, mps, fbnd);           // hook: ghost penalty, ...
+    hooks.passTerms(uvw, mps, fbnd);                                // hook: ghost penalty, ...
     oobf = fext - mps.fint + frct;                                  // out of balance force
     fErr = normalisedResidual(oobf, fext, frct + fbnd, an.frct, NRit);  // eq 35
-    if (hooks.afterPass) hooks.afterPass(an, inc, NRit, fErr);      // hook: progress, log
+    hooks.afterPass(an, inc, NRit, fErr);                           // hook: progress, log
     NRit++;
   }
   hooks.checkConverged(an, inc, NRit, fErr, uvw, fext + frct + fbnd);  // fErr > tol: throws
   an.frct = frct + fbnd;                                            // reactions
   an.uvw = uvw;
-  updateMPs(mesh, uvw, mpData, hooks.updateDomain);                 // points, mesh reset
-  if (hooks.afterUpdate) hooks.afterUpdate(an, inc, NRit, fErr);    // hook: FE mode, split, log
+  updateMPs(mesh, uvw, mpData, hooks);                              // points, mesh reset
+  hooks.afterUpdate(an, inc, NRit, fErr);                           // hook: FE mode, split, log
 }
 
 void checkConverged(const Analysis& an, const Increment& inc, int NRit, double fErr,
@@ -77,16 +77,17 @@ void checkConverged(const Analysis& an, const Increment& inc, int NRit, double f
 }
 
 // an analysis that asks for an extension (a setup's beforeStep or afterStep, a body force,
-// the finite element mode, implicit boundaries, a remedy, CPDI points or another domain
-// update) runs only with the program's hooks (solveRun, ample/program/run.h): refused
+// the finite element mode, implicit boundaries, a remedy, CPDI points, a general mesh or
+// another domain update) runs only with the program's hooks (solveRun, setups/program/run.h): refused
 // here, not solved wrongly without them
 static void checkHooks(const Analysis& an, const Hooks& hooks) {
-  bool needs = an.beforeStep || an.afterStep || an.bodyForce || an.fem || !an.boundaries.empty() ||
-               an.ghost > 0 || an.substeps > 0 || an.split > 0 || an.domainUpdate != DomainUpdate::Uii;
+  bool needs = an.beforeStep || an.afterStep || an.bodyForce || an.fem || an.boundaries.has_value() ||
+               an.ghost > 0 || an.substeps > 0 || an.split > 0 || an.domainUpdate != DomainUpdate::Uii ||
+               !an.mesh.regular();
   for (const MaterialPoint& mp : an.mpData) needs = needs || isCPDI(mp);
-  if (needs && !(hooks.startStep && hooks.stepTerms && hooks.afterUpdate && hooks.failedStep && hooks.endStep))
+  if (needs && !hooks.program())
     throw InputError(an.name + ": this analysis needs the program's hooks (a setup's beforeStep/afterStep, "
-                     "bodyForce, fem, boundaries, ghost, substeps, split, CPDI or domainUpdate): run it "
+                     "bodyForce, fem, boundaries, ghost, substeps, split, CPDI, a general mesh or domainUpdate): run it "
                      "with solveRun");
 }
 

@@ -3,7 +3,7 @@
 //--------------------------------------------------------------------------
 // [AMPLE] sec 4, fig 4 below setupGrid: solve runs the load steps on an
 // analysis already set up (mesh, mpData), loadStep one of them. The program
-// (ample/program/run.h) sets the analysis up, fills in the hooks and writes
+// (setups/program/run.h) sets the analysis up, fills in the hooks and writes
 // the output.
 // Inputs:  an (mesh, mpData, lstps, tol, NRitMax, g, formulation) · hooks
 // Outputs: an (mesh, mpData; frct, uvw of the last step) · a failed load step

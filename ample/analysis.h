@@ -7,11 +7,13 @@
 // default), the implicit boundaries of [Boundaries] (none by default: nothing
 // changes and nothing costs) and a setup's optional hooks at the start and
 // end of a load step.
-// Data only: the bottom layer with mpData.h (docs/structure.md).
+// Data only: the bottom layer with mpData.h (docs/structure.md). It names no type
+// of an extension: the implicit boundaries' list is held opaque (std::any), for
+// their room to read (ample/boundaries/boundary.h: boundariesOf).
 //--------------------------------------------------------------------------
 #pragma once
-#include "ample/boundaries/boundary.h"
 #include "mpData.h"
+#include <any>
 #include <functional>
 #include <string>
 #include <utility>
@@ -49,7 +51,8 @@ struct Analysis {
   bool fem = false;                   // finite element mode: the mesh moves with the nodes (moveMesh)
   bool gridMoves = false;             // the setup rebuilds the grid between steps (beforeStep;
                                       // stretch, doughnut): postPro writes mesh_<lstp>.vtk
-  std::vector<Boundary> boundaries;                 // implicit boundaries ([Boundaries]); empty: none
+  std::any boundaries;                              // implicit boundaries ([Boundaries]), a
+                                                    // std::vector<Boundary> (boundariesOf); empty: none
   Eigen::VectorXd frct;                             // reactions of the last converged step
   Eigen::VectorXd uvw;                              // its converged displacement increment
   std::vector<Vector2d> ibForce;                    // force of each implicit boundary on the body

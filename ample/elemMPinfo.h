@@ -1,29 +1,31 @@
 //--------------------------------------------------------------------------
 // elemMPinfo — cells, nodes, basis functions and gradients of every point
 //--------------------------------------------------------------------------
-// [AMPLE] sec 4, table 1: once at the start of each load step. GIMP/MPM points
-// take the cells their domain overlaps (elemForMP), CPDI points the cells of their
-// four corners ([CPDI] sec 2 (iii)); on a general mesh meshElemForMP and
-// meshMPMbasis (docs/meshes.md). Per point: its cells, its nodes (nodesForMP),
-// S_vp and dS_vp (MPMbasis; nodes with S = dS = 0 unlinked: dropNullNodes). Then
-// the active cells. keepCells (FE mode): a point keeps the cell it has, no search.
-// Large runs take fast/elemMPinfoFast.h instead: the same result, on threads.
-// Inputs:  mesh · mpData (mpC, lp, mpType, cpdi; eIN, ne when keepCells) · keepCells
-// Outputs: mpData (eIN, ne, nn; nIN, Svp, dSvp) · mesh.eInA (nels)
+// [AMPLE] sec 4, table 1: once at the start of each load step, for the standard
+// MPM and GIMP points of the regular grid. Per point (pointInfo): the cells its
+// domain overlaps (elemForMP), their nodes (nodesForMP), S_vp and dS_vp
+// (MPMbasis). Then the active cells (markActiveCells). CPDI points and general
+// meshes have loops of their own that replace this one as a whole (BasisLoop:
+// ample/cpdi/elemMPinfoCPDI.h, ample/meshes/elemMPinfoMesh.h; large runs
+// ample/fast/elemMPinfoFast.h), chosen by the program (setups/program/run.cpp).
+// Inputs:  mesh (regular grid) · mpData (mpC, lp, mpType)
+// Outputs: mpData (eIN, ne, nIN, nn, Svp, dSvp) · mesh.eInA (nels); RunError
+//          naming the point that left the grid or whose domain grew too large
 // Tests:   tests/test_basis.cpp, tests/test_pointShares.cpp
 //--------------------------------------------------------------------------
 #pragma once
+#include "errors.h"
 #include "mpData.h"
 
 namespace ample {
 
-void elemMPinfo(Mesh& mesh, std::vector<MaterialPoint>& mpData, bool keepCells = false);
-int dropNullNodes(MaterialPoint& mp);  // unlink nodes with S = 0 and dS = 0; returns the new nn
-using BasisLoop = void (*)(Mesh& mesh, std::vector<MaterialPoint>& mpData, bool keepCells);  // or a replacement
+void elemMPinfo(Mesh& mesh, std::vector<MaterialPoint>& mpData);
 
-// the steps of elemMPinfo for one point (p: its index, for messages), for elemMPinfoFast
-void pointCells(const Mesh& mesh, MaterialPoint& mp, size_t p, bool keepCells);  // eIN, ne
-void pointBasis(const Mesh& mesh, MaterialPoint& mp);                            // nIN, nn, Svp, dSvp
-void markActiveCells(Mesh& mesh, const std::vector<MaterialPoint>& mpData);
+// its parts, which the loops that replace it reuse
+void pointInfo(const Mesh& mesh, MaterialPoint& mp, size_t p);  // point p: eIN, ne, nIN, nn, Svp, dSvp
+void markActiveCells(Mesh& mesh, const std::vector<MaterialPoint>& mpData);  // eInA
+RunError atPoint(size_t p, const RunError& e);                  // e, its message naming point p
+// a loop that replaces elemMPinfo as a whole (keepCells: the finite element mode's, fem=1)
+using BasisLoop = void (*)(Mesh& mesh, std::vector<MaterialPoint>& mpData, bool keepCells);
 
 }  // namespace ample

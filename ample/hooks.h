@@ -2,11 +2,13 @@
 // hooks — where the extensions join the main loop, one per phase
 //--------------------------------------------------------------------------
 // A plain run's hooks are the core functions and empty hooks (the defaults
-// below), and solve() is then [AMPLE] fig 4. The program fills them in
-// (ample/program/run.cpp) with what the setup and its parameters ask for:
-// the fast loops of large runs, the other solvers, the remedies, the implicit
-// boundaries, the finite element mode, progress, the log and its timers.
-// Inputs/outputs: see each hook; an empty one is skipped.
+// below), and solve() is then [AMPLE] fig 4. The program derives its own
+// (RunHooks, setups/program/run.cpp) with what the setup and its parameters
+// ask for: the fast loops of large runs, the other solvers, the remedies, the
+// implicit boundaries, the finite element mode, progress, the log and its timers.
+// Each hook is a virtual function, so that gdb's `step` at its call enters it
+// (and from there the core function it calls) directly.
+// Inputs/outputs: see each hook.
 //--------------------------------------------------------------------------
 #pragma once
 #include "analysis.h"
@@ -16,7 +18,6 @@
 #include "errors.h"
 #include "linSolve.h"
 #include "updateMPs.h"
-#include <functional>
 #include <string>
 
 namespace ample {
@@ -35,32 +36,38 @@ struct Increment {              // load step lstp, or a part of it, from load fa
 void checkConverged(const Analysis& an, const Increment& inc, int NRit, double fErr,
                     const Eigen::VectorXd& uvw, const Eigen::VectorXd& load);
 
-struct Hooks;
-
-struct Hooks {
+// the hooks of a plain run: fig 4's functions, and nothing added (linSolve's solveFree and
+// updateMPs' updateDomain come from FreeSolve and UpdateDomain, linSolve.h and updateMPs.h)
+struct Hooks : FreeSolve, UpdateDomain {
+  virtual bool program() const { return false; }  // the program's hooks, which every extension needs
   // solve(): the load steps
-  std::function<void(Analysis& an, const Increment& inc)> startStep;        // progress, setup's beforeStep
-  std::function<void(Analysis& an, const Increment& inc, const RunError& e, const Hooks& hooks)>
-      failedStep;                                                            // retries (empty: stop); it
-                                                                            // solves the step or throws
-  std::function<void(Analysis& an, const Increment& inc)> endStep;          // setup's afterStep, postPro, log
-  // loadStep(): the functions of fig 4, each replaced as a whole or kept
-  std::function<void(Mesh&, std::vector<MaterialPoint>&, bool keepCells)> elemMPinfo = ample::elemMPinfo;
-  std::function<void(Analysis& an, const Increment& inc, Eigen::VectorXd& fext)> stepTerms;  // body force,
-                                                                            // ghost penalty, boundaries
-  std::function<std::vector<int>(const Mesh&, const std::vector<MaterialPoint>&)> detFDoFs = ample::detFDoFs;
-  FreeSolve solveFree = ample::solveFree;                                   // linSolve's Kt(fd,fd) \ rhs
-  std::function<void(const Eigen::VectorXd& uvw, std::vector<MaterialPoint>&, Formulation, DetMPsOut&)>
-      detMPs = PointLoop(ample::detMPs);
-  std::function<void(const Eigen::VectorXd& uvw, DetMPsOut& mps, Eigen::VectorXd& fbnd)> passTerms;  // Kt,
-                                                     // fint and reactions fbnd of ghost penalty, boundaries
-  std::function<void(const Analysis& an, const Increment& inc, int NRit, double fErr)> afterPass;  // log;
-                                                                            // a NaN stops the step
-  std::function<void(const Analysis& an, const Increment& inc, int NRit, double fErr, const Eigen::VectorXd& uvw,
-                     const Eigen::VectorXd& load)> checkConverged = ample::checkConverged;  // or a diagnosis
-  UpdateDomain updateDomain = ample::updateGIMPDomain;                      // updateMPs' domains (eq 34)
-  std::function<void(Analysis& an, const Increment& inc, int NRit, double fErr)> afterUpdate;  // FE mode,
-                                                                            // boundaries, split, log
+  virtual void startStep(Analysis&, const Increment&) const {}              // progress, setup's beforeStep
+  virtual void failedStep(Analysis&, const Increment&, const RunError&) const { throw; }  // retries (here
+                                                    // none: the run stops); solves the step or throws
+  virtual void endStep(Analysis&, const Increment&) const {}                // setup's afterStep, postPro, log
+  // loadStep(): the functions of fig 4, each kept or replaced as a whole
+  virtual void elemMPinfo(Mesh& mesh, std::vector<MaterialPoint>& mpData, bool /*keepCells: FE mode*/) const {
+    ample::elemMPinfo(mesh, mpData);
+  }
+  virtual void stepTerms(Analysis&, const Increment&, Eigen::VectorXd& /*fext*/) const {}  // body force,
+                                                    // geostatic weight, ghost penalty, boundaries
+  virtual std::vector<int> detFDoFs(const Mesh& mesh, const std::vector<MaterialPoint>& mpData) const {
+    return ample::detFDoFs(mesh, mpData);
+  }
+  virtual void detMPs(const Eigen::VectorXd& uvw, std::vector<MaterialPoint>& mpData, Formulation form,
+                      DetMPsOut& mps) const {
+    ample::detMPs(uvw, mpData, form, mps);
+  }
+  virtual void passTerms(const Eigen::VectorXd& /*uvw*/, DetMPsOut& /*mps*/, Eigen::VectorXd& /*fbnd*/) const {}
+                                                    // Kt, fint and reactions fbnd of ghost penalty, boundaries
+  virtual void afterPass(const Analysis&, const Increment&, int /*NRit*/, double /*fErr*/) const {}  // log;
+                                                    // a NaN stops the step
+  virtual void checkConverged(const Analysis& an, const Increment& inc, int NRit, double fErr,
+                              const Eigen::VectorXd& uvw, const Eigen::VectorXd& load) const {
+    ample::checkConverged(an, inc, NRit, fErr, uvw, load);                  // or a diagnosis
+  }
+  virtual void afterUpdate(Analysis&, const Increment&, int /*NRit*/, double /*fErr*/) const {}  // FE mode,
+                                                    // boundaries, split, log
 };
 
 }  // namespace ample

@@ -14,7 +14,7 @@ namespace ample {
 static SpMat freeBlock(const SpMat& Kt, const std::vector<int>& fd);
 
 LinSolveOut linSolve(const std::vector<BC>& bc, const SpMat& Kt, const Eigen::VectorXd& oobf,
-                     int NRit, const std::vector<int>& fd, const FreeSolve& solve) {
+                     int NRit, const std::vector<int>& fd, const FreeSolve& solver) {
   // BEGIN EXERCISE linSolve
   const int nDoF = int(oobf.size()), nfd = int(fd.size());
   LinSolveOut out{Eigen::VectorXd::Zero(nDoF), Eigen::VectorXd::Zero(nDoF)};
@@ -25,7 +25,7 @@ LinSolveOut linSolve(const std::vector<BC>& bc, const SpMat& Kt, const Eigen::Ve
   if (nfd > 0) {
     Eigen::VectorXd rhs(nfd);
     for (int r = 0; r < nfd; ++r) rhs(r) = oobf(fd[r]) - Kd(fd[r]);
-    const Eigen::VectorXd x = solve(Kt, fd, rhs, NRit);  // Kt(fd,fd) \ rhs
+    const Eigen::VectorXd x = solver.solveFree(Kt, fd, rhs, NRit);  // Kt(fd,fd) \ rhs
     for (int r = 0; r < nfd; ++r) out.duvw(fd[r]) = x(r);
   }
   const Eigen::VectorXd Ku = Kt * out.duvw;

@@ -14,7 +14,6 @@
 //--------------------------------------------------------------------------
 #pragma once
 #include "mpData.h"
-#include <functional>
 
 namespace ample {
 
@@ -27,10 +26,16 @@ struct LinSolveOut {
 Eigen::VectorXd solveFree(const SpMat& Kt, const std::vector<int>& fd, const Eigen::VectorXd& rhs, int NRit);
 // RunError (Failure::Singular) when the residual Kff x - rhs is above 1e-3 of rhs: a zero pivot
 void checkSolved(const Eigen::VectorXd& residual, const Eigen::VectorXd& rhs);
-using FreeSolve = std::function<Eigen::VectorXd(const SpMat& Kt, const std::vector<int>& fd,
-                                                const Eigen::VectorXd& rhs, int NRit)>;  // solveFree, or another
+// Kt(fd,fd) \ rhs: solveFree (SparseLU) here; the program's hooks (hooks.h) choose another solver
+struct FreeSolve {
+  virtual ~FreeSolve() = default;
+  virtual Eigen::VectorXd solveFree(const SpMat& Kt, const std::vector<int>& fd, const Eigen::VectorXd& rhs,
+                                    int NRit) const {
+    return ample::solveFree(Kt, fd, rhs, NRit);
+  }
+};
 
 LinSolveOut linSolve(const std::vector<BC>& bc, const SpMat& Kt, const Eigen::VectorXd& oobf,
-                     int NRit, const std::vector<int>& fd, const FreeSolve& solve = solveFree);
+                     int NRit, const std::vector<int>& fd, const FreeSolve& solver = FreeSolve());
 
 }  // namespace ample

@@ -15,6 +15,7 @@
 // Tests:   tests/test_mpData.cpp
 //--------------------------------------------------------------------------
 #pragma once
+#include "constitutive/Hooke3d.h"  // MaterialConstants
 #include <Eigen/Dense>
 #include <Eigen/SparseCore>
 #include <array>
@@ -98,7 +99,7 @@ struct MaterialPoint {                     // members ordered so that they pack
                                            // dSvp(j, v), dSvp.col(v), dSvp.leftCols(nn)
   Matrix3d Fn = Matrix3d::Identity();      // deformation gradient at start of load step
   Matrix3d F = Matrix3d::Identity();       // current deformation gradient (SS: stays I)
-  Vector3d mCst = Vector3d::Zero();        // material constants [E, nu, rho_y]
+  MaterialConstants mCst;                  // material constants E, nu, rhoY
   Vector6d sig = Vector6d::Zero();         // Cauchy stress
   Vector6d epsEn = Vector6d::Zero();       // elastic log strain at start of load step (SS: small)
   Vector6d epsE = Vector6d::Zero();        // current elastic log strain (SS: small strain)

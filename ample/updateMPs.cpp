@@ -10,14 +10,14 @@
 namespace ample {
 
 void updateMPs(const Mesh& mesh, const Eigen::VectorXd& uvw, std::vector<MaterialPoint>& mpData,
-               const UpdateDomain& updateDomain) {
+               const UpdateDomain& domains) {
   // BEGIN EXERCISE updateMPs
   for (MaterialPoint& mp : mpData) {
     Vector2d du = Vector2d::Zero();                      // eq 33
     for (int v = 0; v < mp.nn; ++v)
       for (int i = 0; i < nD; ++i) du(i) += mp.Svp[v] * uvw(dof(mp.nIN[v], i));
     mp.vp = mp.F.determinant() * mp.vp0;                 // eq 15
-    updateDomain(mesh, uvw, mp);                         // eq 34 (before the point moves)
+    domains.updateDomain(mesh, uvw, mp);                 // eq 34 (before the point moves)
     mp.mpC += du;
     mp.u += du;
     mp.Fn = mp.F;

@@ -21,17 +21,22 @@
 //--------------------------------------------------------------------------
 #pragma once
 #include "mpData.h"
-#include <functional>
 
 namespace ample {
 
 // eq 34 for a GIMP point (called before it moves); nothing for the others
 void updateGIMPDomain(const Mesh& mesh, const Eigen::VectorXd& uvw, MaterialPoint& mp);
-using UpdateDomain = std::function<void(const Mesh& mesh, const Eigen::VectorXd& uvw,
-                                        MaterialPoint& mp)>;  // updateGIMPDomain, or another
+// a point's domain at the end of the step: updateGIMPDomain here; the program's hooks
+// (hooks.h) choose another domain update (CPDI, domainUpdate=)
+struct UpdateDomain {
+  virtual ~UpdateDomain() = default;
+  virtual void updateDomain(const Mesh& mesh, const Eigen::VectorXd& uvw, MaterialPoint& mp) const {
+    updateGIMPDomain(mesh, uvw, mp);
+  }
+};
 
 void updateMPs(const Mesh& mesh, const Eigen::VectorXd& uvw, std::vector<MaterialPoint>& mpData,
-               const UpdateDomain& updateDomain = updateGIMPDomain);
+               const UpdateDomain& domains = UpdateDomain());
 void moveMesh(Mesh& mesh, const Eigen::VectorXd& uvw);
 
 }  // namespace ample

@@ -21,10 +21,10 @@ Matrix6d elasticStiffness(double E, double nu) {
   // END EXERCISE
 }
 
-ConstOut Hooke3d(const Vector6d& epsEtr, const Vector3d& mCst) {
+ConstOut Hooke3d(const Vector6d& epsEtr, const MaterialConstants& mCst) {
   // BEGIN EXERCISE Hooke3d
   ConstOut out;
-  out.D = elasticStiffness(mCst(0), mCst(1));
+  out.D = elasticStiffness(mCst.E, mCst.nu);
   out.Ksig = out.D * epsEtr;
   out.epsE = epsEtr;
   return out;

@@ -4,7 +4,7 @@
 // [AMPLE] eq 5: tau = D eps_e, with D the 6x6 isotropic stiffness acting on
 // engineering shear strains. With logarithmic strain and Kirchhoff stress
 // this is hyperelastic for any deformation ([AMPLE] sec 2.1).
-// Inputs:  epsEtr (6) trial elastic log strain · mCst (3) [E, nu, -]
+// Inputs:  epsEtr (6) trial elastic log strain · mCst: E, nu (rhoY unused)
 // Outputs: D (6x6) · Ksig (6) Kirchhoff stress · epsE (6) = epsEtr
 // Tests:   tests/test_constitutive.cpp
 //--------------------------------------------------------------------------
@@ -26,7 +26,14 @@ struct ConstOut {
   Vector6d epsE;    // updated elastic log strain
 };
 
+// the material constants a point carries (mpData.h: mCst), set from the setup's E, nu, rhoY
+struct MaterialConstants {
+  double E = 0;     // Young's modulus (Pa)
+  double nu = 0;    // Poisson's ratio
+  double rhoY = 0;  // von Mises strength rho_y = sqrt(2 J2) at yield (Pa; VMconst only)
+};
+
 Matrix6d elasticStiffness(double E, double nu);  // the 6x6 matrix D of eq 5
-ConstOut Hooke3d(const Vector6d& epsEtr, const Vector3d& mCst);
+ConstOut Hooke3d(const Vector6d& epsEtr, const MaterialConstants& mCst);
 
 }  // namespace ample

@@ -9,9 +9,9 @@
 
 namespace ample {
 
-ConstOut VMconst(const Vector6d& epsEtr, const Vector3d& mCst) {
+ConstOut VMconst(const Vector6d& epsEtr, const MaterialConstants& mCst) {
   // BEGIN EXERCISE VMconst
-  const double E = mCst(0), nu = mCst(1), rhoY = mCst(2);
+  const double E = mCst.E, nu = mCst.nu, rhoY = mCst.rhoY;
   ConstOut out = Hooke3d(epsEtr, mCst);                 // elastic predictor
   Vector6d m;
   m << 1, 1, 1, 0, 0, 0;

@@ -7,7 +7,7 @@
 // solution of the backward-Euler equations for this surface. The consistent
 // tangent is D = K m m' + 2G theta (I_dev - n n'), theta = rho_y/rho_tr,
 // n = s_tr/|s_tr| (the derivative of this return map).
-// Inputs:  epsEtr (6) trial elastic log strain · mCst (3) [E, nu, rho_y]
+// Inputs:  epsEtr (6) trial elastic log strain · mCst: E, nu, rhoY
 // Outputs: D (6x6) algorithmic tangent · Ksig (6) · epsE (6)
 // Tests:   tests/test_constitutive.cpp
 //--------------------------------------------------------------------------
@@ -16,6 +16,6 @@
 
 namespace ample {
 
-ConstOut VMconst(const Vector6d& epsEtr, const Vector3d& mCst);
+ConstOut VMconst(const Vector6d& epsEtr, const MaterialConstants& mCst);
 
 }  // namespace ample

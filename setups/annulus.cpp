@@ -51,16 +51,27 @@ Vector2d bodyForce(const Vector2d& X, double alpha, double G) {
   return Vector2d(br * std::cos(phi) - bp * std::sin(phi), br * std::sin(phi) + bp * std::cos(phi));
 }
 
-Params params() {
-  Params P = commonParams(10);
-  setDefault(P, "mpType", 1);
-  setDefault(P, "E", 1.0);
-  setDefault(P, "nu", 0.0);
-  P.push_back(Param("h", 0.4363).range(0.005, 1).help("mesh size: chord on the outer circle (m)"));
-  P.push_back(Param("mpTri", 4).integer(1, 200).help("points per triangle: k^2 or 2 k^2"));
-  P.push_back(Param("alpha", 0.1).range(-1, 1).help("rotation alpha of eq 44 (rad)"));
-  P.push_back(Param("bfLinear", 0).integer(0, 1)
-                  .help("0: body force of the motion at alpha lf; 1: lf times the full one"));
+// the parameters and their defaults (their ranges and help: params)
+struct Annulus : Common {
+  double h = 0.4363;
+  int mpTri = 4;
+  double alpha = 0.1;
+  int bfLinear = 0;
+  Annulus() {
+    lstps = 10;
+    mpType = MpType::MPM;
+    E = 1.0;
+    nu = 0.0;
+  }
+};
+
+Params params(Annulus& p) {
+  Params P = commonParams(p);
+  param(P, "h", p.h).range(0.005, 1).help("mesh size: chord on the outer circle (m)");
+  param(P, "mpTri", p.mpTri).integer(1, 200).help("points per triangle: k^2 or 2 k^2");
+  param(P, "alpha", p.alpha).range(-1, 1).help("rotation alpha of eq 44 (rad)");
+  param(P, "bfLinear", p.bfLinear).integer(0, 1)
+      .help("0: body force of the motion at alpha lf; 1: lf times the full one");
   return P;
 }
 
@@ -104,11 +115,11 @@ static void ringMesh(int ns, int nr, Eigen::MatrixX2d& coord, Eigen::MatrixXi& e
     }
 }
 
-Analysis setupGrid(const Params& P) {
-  Analysis an = baseAnalysis(P);
-  const int ns = int(std::lround(2 * M_PI * Ro / get(P, "h")));
+Analysis setupGrid(const Annulus& p) {
+  Analysis an = baseAnalysis(p);
+  const int ns = int(std::lround(2 * M_PI * Ro / p.h));
   const int nr = std::max(1, int(std::lround(2.0 * ns / 18)));
-  const int n = int(get(P, "mpTri"));
+  const int n = p.mpTri;
   int k = int(std::lround(std::sqrt(double(n)))), kh = int(std::lround(std::sqrt(n / 2.0)));
   const bool halve = k * k != n;
   if (halve) k = kh;
@@ -122,7 +133,7 @@ Analysis setupGrid(const Params& P) {
       const double R = std::hypot(X, Y);
       return std::abs(R - Ri) < 1e-9 || std::abs(R - Ro) < 1e-9;
     });
-  if (MpType(int(get(P, "mpType"))) == MpType::GIMP)  // GIMP needs the regular grid
+  if (p.mpType == MpType::GIMP)  // GIMP needs the regular grid
     throw InputError("mpType=2 (GIMP) needs the regular grid; the annulus is a triangle mesh "
                      "(use mpType=1 MPM, 3 CPDI1 or 4 CPDI2)");
   for (int c = 0; c < an.mesh.nels(); ++c) {
@@ -131,21 +142,21 @@ Analysis setupGrid(const Params& P) {
     triPoints(a, b, d, k, halve, tris);
     for (const auto& t : tris) {
       const double A = 0.5 * std::abs((t[1] - t[0]).x() * (t[2] - t[0]).y() - (t[1] - t[0]).y() * (t[2] - t[0]).x());
-      MaterialPoint mp = cellPoint((t[0] + t[1] + t[2]) / 3, A, P, 0.0);  // CPDI: a square of area A
+      MaterialPoint mp = cellPoint((t[0] + t[1] + t[2]) / 3, A, p, 0.0);  // CPDI: a square of area A
       mp.cmType = CmType::Elastic;
       an.mpData.push_back(mp);
     }
   }
-  const double alpha = get(P, "alpha"), G = get(P, "E") / (2 * (1 + get(P, "nu")));
-  const bool linear = get(P, "bfLinear") == 1;
+  const double alpha = p.alpha, G = p.E / (2 * (1 + p.nu));
+  const bool linear = p.bfLinear == 1;
   an.bodyForce = [=](const Vector2d& X, double lf) {
     return linear ? Vector2d(lf * bodyForce(X, alpha, G)) : bodyForce(X, lf * alpha, G);
   };
   return an;
 }
 
-Results results(const Analysis& an, const Params& P) {
-  const double alpha = get(P, "alpha");
+Results results(const Analysis& an, const Annulus& p) {
+  const double alpha = p.alpha;
   double err = 0, V = 0, emax = 0;
   for (const MaterialPoint& mp : an.mpData) {
     const double e = (mp.u - displacement(mp.X0, alpha)).norm();
@@ -156,5 +167,8 @@ Results results(const Analysis& an, const Params& P) {
   return {{"error", err / V}, {"max_point_error", emax}, {"points", double(an.mpData.size())},
           {"nodes", double(an.mesh.nodes())}};
 }
+
+// this setup's line in the table of setups/setups.cpp
+SetupCalls calls() { return {params, setupGrid, results}; }
 
 }  // namespace ample::annulus

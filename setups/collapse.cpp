@@ -11,47 +11,58 @@
 //          centres plus the initial half spacing h/(2 mp) (MPM, [Lagrangian] table 6)
 // Tests:   tests/test_ample.cpp
 //--------------------------------------------------------------------------
-#include "ample/meshes/formCoord2D.h"
+#include "formCoord2D.h"
 #include "setupHelpers.h"
 #include <cmath>
 
 namespace ample::collapse {
 
-Params params() {
-  Params P = commonParams(40);
-  setDefault(P, "mp", 3);
-  setDefault(P, "cmType", 2);
-  setDefault(P, "E", 1e6);
-  setDefault(P, "nu", 0.3);
-  setDefault(P, "rhoY", 20e3);
-  P.push_back(Param("a", 2).integer(1, 64).help("grid refinement: h = 2 m / a"));
-  P.push_back(Param("width", 16).above(8).atMost(1000)
-                  .help("grid width (m), rounded up to whole cells; below ~14 m the toe leaves the grid"));
-  P.push_back(Param("supports", 1).integer(0, 1)
-                  .help("rollers on base and left edge (1), or none (0: a rigid-body mode, for testing)"));
-  P.push_back(Param("rho", 1000).atLeast(0).help("density (kg/m3)"));
-  P.push_back(Param("g", 10).atLeast(0).help("gravitational acceleration (m/s2)"));
+// the parameters and their defaults (their ranges and help: params)
+struct Collapse : Common {
+  int a = 2;
+  double width = 16;
+  int supports = 1;
+  double rho = 1000, g = 10;
+  Collapse() {
+    lstps = 40;
+    mp = 3;
+    cmType = CmType::VonMises;
+    E = 1e6;
+    nu = 0.3;
+    rhoY = 20e3;
+  }
+};
+
+Params params(Collapse& p) {
+  Params P = commonParams(p);
+  param(P, "a", p.a).integer(1, 64).help("grid refinement: h = 2 m / a");
+  param(P, "width", p.width).above(8).atMost(1000)
+      .help("grid width (m), rounded up to whole cells; below ~14 m the toe leaves the grid");
+  param(P, "supports", p.supports).integer(0, 1)
+      .help("rollers on base and left edge (1), or none (0: a rigid-body mode, for testing)");
+  param(P, "rho", p.rho).atLeast(0).help("density (kg/m3)");
+  param(P, "g", p.g).atLeast(0).help("gravitational acceleration (m/s2)");
   return P;
 }
 
-Analysis setupGrid(const Params& P) {
-  const int a = int(get(P, "a"));
-  Analysis an = baseAnalysis(P);
-  an.g = get(P, "g");
-  const int nelsx = int(std::ceil(get(P, "width") * a / 2.0 - 1e-9));  // h = 2 m / a
+Analysis setupGrid(const Collapse& p) {
+  const int a = p.a;
+  Analysis an = baseAnalysis(p);
+  an.g = p.g;
+  const int nelsx = int(std::ceil(p.width * a / 2.0 - 1e-9));  // h = 2 m / a
   an.mesh = formCoord2D(nelsx, 4 * a, nelsx * 2.0 / a, 8);
-  if (get(P, "width") < 1000) an.widerGrid = "width=" + number(std::min(1000.0, 2 * get(P, "width")));
+  if (p.width < 1000) an.widerGrid = "width=" + number(std::min(1000.0, 2 * p.width));
   const double eps = 1e-9 * an.mesh.h(0);
-  if (get(P, "supports") == 1) {
+  if (p.supports == 1) {
     fixDofs(an.mesh, 0, [&](double X, double) { return X < eps; });  // left edge
     fixDofs(an.mesh, 1, [&](double, double Y) { return Y < eps; });  // base
   }
-  fillBlock(an.mpData, Vector2d::Zero(), 4 * a, 4 * a, an.mesh.h, P, get(P, "rho"));
+  fillBlock(an.mpData, Vector2d::Zero(), 4 * a, 4 * a, an.mesh.h, p, p.rho);
   return an;
 }
 
-Results results(const Analysis& an, const Params& P) {
-  const double half = an.mesh.h(0) / (2.0 * get(P, "mp"));  // initial half spacing
+Results results(const Analysis& an, const Collapse& p) {
+  const double half = an.mesh.h(0) / (2.0 * p.mp);  // initial half spacing
   double ext = -INFINITY, hgt = -INFINITY, xMax = -INFINITY, yMax = -INFINITY;
   for (const MaterialPoint& mp : an.mpData) {
     const Vector2d l = (mp.mpType == MpType::MPM) ? Vector2d(half, half) : mp.lp;
@@ -62,5 +73,8 @@ Results results(const Analysis& an, const Params& P) {
   }
   return {{"extent", ext}, {"height", hgt}, {"max_x", xMax}, {"max_y", yMax}};
 }
+
+// this setup's line in the table of setups/setups.cpp
+SetupCalls calls() { return {params, setupGrid, results}; }
 
 }  // namespace ample::collapse

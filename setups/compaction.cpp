@@ -10,38 +10,48 @@
 // Outputs: Analysis (mesh, mpData, lstps, g) · results: error (eq 37)
 // Tests:   tests/test_setups.cpp (eq 36 / 37 values), tests/test_ample.cpp, tests/test_output.cpp
 //--------------------------------------------------------------------------
-#include "ample/meshes/formCoord2D.h"
+#include "formCoord2D.h"
 #include "setupHelpers.h"
 #include <cmath>
 
 namespace ample::compaction {
 
-Params params() {
-  Params P = commonParams(40);
-  setDefault(P, "E", 10e3);
-  setDefault(P, "nu", 0.0);
-  P.push_back(Param("nelsy", 64).integer(1, 1 << 22).help("cells over the column height"));
-  P.push_back(Param("l0", 50).above(0).help("column height (m)"));
-  P.push_back(Param("rho", 80).atLeast(0).help("density (kg/m3)"));
-  P.push_back(Param("g", 10).atLeast(0).help("gravitational acceleration (m/s2)"));
+// the parameters and their defaults (their ranges and help: params)
+struct Compaction : Common {
+  int nelsy = 64;
+  double l0 = 50, rho = 80, g = 10;
+  Compaction() {
+    lstps = 40;
+    E = 10e3;
+    nu = 0.0;
+  }
+};
+
+// each parameter's name on the command line, bound to its member, with its range and help
+Params params(Compaction& p) {
+  Params P = commonParams(p);
+  param(P, "nelsy", p.nelsy).integer(1, 1 << 22).help("cells over the column height");
+  param(P, "l0", p.l0).above(0).help("column height (m)");
+  param(P, "rho", p.rho).atLeast(0).help("density (kg/m3)");
+  param(P, "g", p.g).atLeast(0).help("gravitational acceleration (m/s2)");
   return P;
 }
 
-Analysis setupGrid(const Params& P) {
-  const int nelsy = int(get(P, "nelsy"));
-  const double l0 = get(P, "l0"), lx = l0 / nelsy;  // one square cell wide
-  Analysis an = baseAnalysis(P);
-  an.g = get(P, "g");
+Analysis setupGrid(const Compaction& p) {
+  const int nelsy = p.nelsy;
+  const double l0 = p.l0, lx = l0 / nelsy;  // one square cell wide
+  Analysis an = baseAnalysis(p);
+  an.g = p.g;
   an.mesh = formCoord2D(1, nelsy, lx, l0);
   const double eps = 1e-9 * lx;
   fixDofs(an.mesh, 0, [&](double X, double) { return X < eps || X > lx - eps; });  // sides
   fixDofs(an.mesh, 1, [&](double, double Y) { return Y < eps; });                   // base
-  fillBlock(an.mpData, Vector2d::Zero(), 1, nelsy, an.mesh.h, P, get(P, "rho"));
+  fillBlock(an.mpData, Vector2d::Zero(), 1, nelsy, an.mesh.h, p, p.rho);
   return an;
 }
 
-Results results(const Analysis& an, const Params& P) {
-  const double l0 = get(P, "l0"), rho = get(P, "rho"), g = get(P, "g");
+Results results(const Analysis& an, const Compaction& p) {
+  const double l0 = p.l0, rho = p.rho, g = p.g;
   double V0 = 0.0, err = 0.0;
   for (const MaterialPoint& mp : an.mpData) {
     const double sigA = -rho * g * (l0 - mp.X0(1));  // eq 36
@@ -55,5 +65,8 @@ Results results(const Analysis& an, const Params& P) {
   }
   return r;
 }
+
+// this setup's line in the table of setups/setups.cpp
+SetupCalls calls() { return {params, setupGrid, results}; }
 
 }  // namespace ample::compaction

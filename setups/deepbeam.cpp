@@ -34,9 +34,9 @@
 #include "ample/detFDoFs.h"
 #include "ample/remedies/loneNodes.h"
 #include "ample/formulations/detMPsForm.h"
-#include "ample/elemMPinfo.h"
+#include "ample/cpdi/elemMPinfoCPDI.h"
 #include "ample/errors.h"
-#include "ample/meshes/formCoord2D.h"
+#include "formCoord2D.h"
 #include "ample/linSolve.h"
 #include "setupHelpers.h"
 #include <cmath>
@@ -48,46 +48,55 @@ static const double L = 0.1;                           // side of the body (m)
 static const double g = 10.0;                          // body force = rho g (m/s2)
 static const double roomBelow = 0.06, roomRight = 0.03;  // grid room for the sag (m)
 
-Params params() {
-  Params P = boundariesParams(1, 4);
-  for (Param& p : P) {
-    if (p.name == "lstps") p.integer(1, 1).help("load steps: one (the paper's; v(A) is its nodal solution)");
-    if (p.name == "mp") p.integer(1, 40);            // table II goes to 40 x 40
+// the parameters and their defaults (their ranges and help: params)
+struct Deepbeam : IbCommon {
+  double h = 0.01, b = 1e9;
+  int A = 0;                                         // 0 bottom, 1 mid
+  int reference = 0;                                 // 0 IB, 1 FE
+  Deepbeam() {
+    lstps = 1;
+    mp = 4;
   }
-  P.push_back(Param("h", 0.01).range(2e-4, 0.05).help("grid spacing (m); L / h a whole number (L = 0.1 m)"));
-  P.push_back(Param("b", 1e9).atLeast(0).help("body force in -y (N/m3; the paper's 1 N/mm2 = 1e9)"));
-  P.push_back(Param("A", 0).choice(0, {"bottom", "mid"})
-                  .help("point A of fig 14 (not in the text): the free end's bottom corner (L, 0) "
-                        "or its mid-height (L, L/2)"));
-  P.push_back(Param("reference", 0).choice(0, {"IB", "FE"})
-                  .help("IB: mp x mp points, the implicit fixed side (the paper's MPM); FE: points at "
-                        "the 2 x 2 Gauss positions and nodal fixity on x = 0 (bilinear FE); rA always "
-                        "compares with this model in small strain (SS), whatever the formulation"));
+};
+
+Params params(Deepbeam& p) {
+  Params P = ibCommonParams(p);
+  P.named("lstps").integer(1, 1).help("load steps: one (the paper's; v(A) is its nodal solution)");
+  P.named("mp").integer(1, 40);                      // table II goes to 40 x 40
+  param(P, "h", p.h).range(2e-4, 0.05).help("grid spacing (m); L / h a whole number (L = 0.1 m)");
+  param(P, "b", p.b).atLeast(0).help("body force in -y (N/m3; the paper's 1 N/mm2 = 1e9)");
+  param(P, "A", p.A).choice(0, {"bottom", "mid"})
+      .help("point A of fig 14 (not in the text): the free end's bottom corner (L, 0) "
+            "or its mid-height (L, L/2)");
+  param(P, "reference", p.reference).choice(0, {"IB", "FE"})
+      .help("IB: mp x mp points, the implicit fixed side (the paper's MPM); FE: points at "
+            "the 2 x 2 Gauss positions and nodal fixity on x = 0 (bilinear FE); rA always "
+            "compares with this model in small strain (SS), whatever the formulation");
   return P;
 }
 
 static int cells(double length, double h) { return int(std::ceil(length / h - 1e-9)); }
 
-Analysis setupGrid(const Params& P) {
-  const double h = get(P, "h"), rho = get(P, "b") / g;
+Analysis setupGrid(const Deepbeam& p) {
+  const double h = p.h, rho = p.b / g;
   const int nL = int(std::lround(L / h));
   if (std::abs(nL * h - L) > 1e-9 * L)
     throw InputError("h: L / h must be a whole number (L = 0.1 m), got h = " + std::to_string(h));
   const int nx = nL + cells(roomRight, h), nBelow = cells(roomBelow, h), ny = nBelow + nL + 1;
-  Analysis an = baseAnalysis(P);
+  Analysis an = baseAnalysis(p);
   an.g = g;
   an.mesh = formCoord2D(nx, ny, nx * h, ny * h);
   const Vector2d corner(0.0, nBelow * h);              // lower-left corner of the body
-  if (get(P, "reference") == 0) {
-    addBoundary(an, {corner + Vector2d(0, L), corner}, BoundaryType::Fixed, get(P, "delta"));
-    ibSettings(an, P);
-    fillBlock(an.mpData, corner, nL, nL, an.mesh.h, P, rho);
+  if (p.reference == 0) {
+    addBoundary(an, {corner + Vector2d(0, L), corner}, BoundaryType::Fixed, p.delta);
+    ibSettings(an, p);
+    fillBlock(an.mpData, corner, nL, nL, an.mesh.h, p, rho);
     return an;
   }
   for (int i = 0; i < 2; ++i)                           // the support on the nodes of x = 0
     fixDofs(an.mesh, i, [&](double X, double) { return X < 1e-9 * h; });
-  Params one = P;                                       // one point in each quarter "cell" of
-  setDefault(one, "mp", 1);                             // side h/2 about a Gauss position
+  Deepbeam one = p;                                     // one point in each quarter "cell" of
+  one.mp = 1;                                           // side h/2 about a Gauss position
   const double a = 0.5 / std::sqrt(3.0);                // Gauss position: centre +- h/(2 sqrt 3)
   const Vector2d q = an.mesh.h / 2;
   an.mpData.reserve(4 * size_t(nL) * nL);              // fillBlock below adds one at a time
@@ -105,7 +114,7 @@ Analysis setupGrid(const Params& P) {
 // depend on u, so solve()'s first Newton pass is this and the second corrects round-off)
 static Eigen::VectorXd linearSolution(Analysis& an) {
   const int nDoF = an.mesh.nDoF();
-  elemMPinfo(an.mesh, an.mpData);
+  elemMPinfoCPDI(an.mesh, an.mpData);
   const Eigen::VectorXd fext = detExtForce(nDoF, an.g, an.mpData);
   const std::vector<int> fd = detFDoFsLone(an.mesh, an.mpData);
   const DetMPsOut mps = detMPsOf(Eigen::VectorXd::Zero(nDoF), an.mpData, Formulation::SS);
@@ -121,12 +130,12 @@ static double vAt(const Mesh& mesh, const Eigen::VectorXd& uvw, double y) {
   return w < 1e-9 ? v(iy) : (1 - w) * v(iy) + w * v(iy + 1);
 }
 
-Results results(const Analysis& an, const Params& P) {
-  Params Q = P;
-  setDefault(Q, "reference", 1);
-  Analysis fe = setupGrid(Q);
+Results results(const Analysis& an, const Deepbeam& p) {
+  Deepbeam q = p;
+  q.reference = 1;
+  Analysis fe = setupGrid(q);
   const Eigen::VectorXd uFE = linearSolution(fe);
-  const double y0 = cells(roomBelow, get(P, "h")) * get(P, "h");
+  const double y0 = cells(roomBelow, p.h) * p.h;
   const Eigen::VectorXd u = an.uvw.size() == an.mesh.nDoF() ? an.uvw   // none: no step converged
                                                              : Eigen::VectorXd::Zero(an.mesh.nDoF());
   auto err = [&](double y, double& v, double& vFE) {
@@ -136,15 +145,18 @@ Results results(const Analysis& an, const Params& P) {
   };
   double vb, vbFE, vm, vmFE;
   const double rb = err(y0, vb, vbFE), rm = err(y0 + L / 2, vm, vmFE);
-  const bool mid = get(P, "A") == 1;
+  const bool mid = p.A == 1;
   std::set<int> linked;                                 // nodes of the points (this step)
   for (const MaterialPoint& mp : an.mpData) linked.insert(mp.nIN.begin(), mp.nIN.begin() + mp.nn);
   Results r{{"rA", mid ? rm : rb}, {"vA_mm", 1e3 * (mid ? vm : vb)}, {"vA_FE_mm", 1e3 * (mid ? vmFE : vbFE)},
             {"rA_bottom", rb}, {"rA_mid", rm}, {"dofs", 2.0 * linked.size()},
             {"points", double(an.mpData.size())}};
   for (const char* k : {"rA", "rA_bottom", "rA_mid"})
-    if (get(P, "b") == 0) r.undefined(k, "no load (b = 0): the error is relative to v_FE(A) = 0");
+    if (p.b == 0) r.undefined(k, "no load (b = 0): the error is relative to v_FE(A) = 0");
   return r;
 }
+
+// this setup's line in the table of setups/setups.cpp
+SetupCalls calls() { return {params, setupGrid, results}; }
 
 }  // namespace ample::deepbeam

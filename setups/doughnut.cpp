@@ -42,50 +42,61 @@
 
 namespace ample::doughnut {
 
-Params params() {
-  Params P = commonParams(2);
-  setDefault(P, "mpType", 1);
-  setDefault(P, "cmType", 2);
-  setDefault(P, "E", 1e6);
-  setDefault(P, "nu", 0.0);
-  setDefault(P, "rhoY", 1e6);
-  P.push_back(Param("nr", 10).integer(1, 400).help("cells along the radius (paper 10; fig 8: 5)"));
-  P.push_back(Param("nc", 72).integer(4, 4000).help("cells round the annulus (paper 72; fig 8: 18)"));
-  P.push_back(Param("hole", 0).choice(0, {"circle", "ellipse"})
-                  .help("inner boundary: circle A = B = 5 or ellipse A = 6, B = 4 (fig 5)"));
-  P.push_back(Param("refine", 0).range(0, 0.9)
-                  .help("circumferential grading k at the hole: theta = tau - (1 - i/nr) k sin(2 tau)/2, cells "
-                        "(1 + k)/(1 - k) times smaller at theta = 0, 180 degrees (the ellipse's long axis) "
-                        "than at 90 on the hole, uniform on the outer circle (0: uniform)"));
-  P.push_back(Param("dalpha", 5).range(0, 45).help("clockwise rotation of the inner boundary per step (degrees)"));
-  P.push_back(Param("fem", 0).integer(0, 1)
-                  .help("1: finite element mode (the mesh moves with the nodes; mpType=1 only)"));
+// the parameters and their defaults (their ranges and help: params)
+struct Doughnut : Common {
+  int nr = 10, nc = 72;
+  int hole = 0;                                     // 0 circle, 1 ellipse
+  double refine = 0, dalpha = 5;
+  int fem = 0;
+  Doughnut() {
+    lstps = 2;
+    mpType = MpType::MPM;
+    cmType = CmType::VonMises;
+    E = 1e6;
+    nu = 0.0;
+    rhoY = 1e6;
+  }
+};
+
+Params params(Doughnut& p) {
+  Params P = commonParams(p);
+  param(P, "nr", p.nr).integer(1, 400).help("cells along the radius (paper 10; fig 8: 5)");
+  param(P, "nc", p.nc).integer(4, 4000).help("cells round the annulus (paper 72; fig 8: 18)");
+  param(P, "hole", p.hole).choice(0, {"circle", "ellipse"})
+      .help("inner boundary: circle A = B = 5 or ellipse A = 6, B = 4 (fig 5)");
+  param(P, "refine", p.refine).range(0, 0.9)
+      .help("circumferential grading k at the hole: theta = tau - (1 - i/nr) k sin(2 tau)/2, cells "
+            "(1 + k)/(1 - k) times smaller at theta = 0, 180 degrees (the ellipse's long axis) "
+            "than at 90 on the hole, uniform on the outer circle (0: uniform)");
+  param(P, "dalpha", p.dalpha).range(0, 45).help("clockwise rotation of the inner boundary per step (degrees)");
+  param(P, "fem", p.fem).integer(0, 1)
+      .help("1: finite element mode (the mesh moves with the nodes; mpType=1 only)");
   return P;
 }
 
 namespace {
 constexpr double R = 10.0;
-double holeA(const Params& P) { return get(P, "hole") == 0 ? 5.0 : 6.0; }
-double holeB(const Params& P) { return get(P, "hole") == 0 ? 5.0 : 4.0; }
+double holeA(const Doughnut& p) { return p.hole == 0 ? 5.0 : 6.0; }
+double holeB(const Doughnut& p) { return p.hole == 0 ? 5.0 : 4.0; }
 Eigen::Matrix2d rotation(double a) {
   Eigen::Matrix2d Q;
   Q << std::cos(a), -std::sin(a), std::sin(a), std::cos(a);
   return Q;
 }
-Eigen::MatrixX2d nodes0(const Params& P) {  // node n = i nc + j
-  const int nr = int(get(P, "nr")), nc = int(get(P, "nc"));
+Eigen::MatrixX2d nodes0(const Doughnut& p) {  // node n = i nc + j
+  const int nr = p.nr, nc = p.nc;
   Eigen::MatrixX2d X((nr + 1) * nc, 2);
   for (int i = 0; i <= nr; ++i)
     for (int j = 0; j < nc; ++j) {
       const double tau = 2 * M_PI * j / nc, s = double(i) / nr;
-      const double t = tau - 0.5 * (1 - s) * get(P, "refine") * std::sin(2 * tau);  // graded at the hole
-      X.row(i * nc + j) << (1 - s) * holeA(P) * std::cos(t) + s * R * std::cos(t),
-          (1 - s) * holeB(P) * std::sin(t) + s * R * std::sin(t);
+      const double t = tau - 0.5 * (1 - s) * p.refine * std::sin(2 * tau);  // graded at the hole
+      X.row(i * nc + j) << (1 - s) * holeA(p) * std::cos(t) + s * R * std::cos(t),
+          (1 - s) * holeB(p) * std::sin(t) + s * R * std::sin(t);
     }
   return X;
 }
-Eigen::MatrixXi cells(const Params& P) {
-  const int nr = int(get(P, "nr")), nc = int(get(P, "nc"));
+Eigen::MatrixXi cells(const Doughnut& p) {
+  const int nr = p.nr, nc = p.nc;
   Eigen::MatrixXi T(nr * nc, 4);
   for (int i = 0; i < nr; ++i)
     for (int j = 0; j < nc; ++j)
@@ -93,9 +104,9 @@ Eigen::MatrixXi cells(const Params& P) {
   return T;
 }
 // the step's conditions: outer nodes fixed, inner nodes turned by dalpha clockwise
-void conditions(Mesh& mesh, const Params& P) {
-  const int nr = int(get(P, "nr")), nc = int(get(P, "nc"));
-  const Eigen::Matrix2d dQ = rotation(-get(P, "dalpha") * M_PI / 180) - Eigen::Matrix2d::Identity();
+void conditions(Mesh& mesh, const Doughnut& p) {
+  const int nr = p.nr, nc = p.nc;
+  const Eigen::Matrix2d dQ = rotation(-p.dalpha * M_PI / 180) - Eigen::Matrix2d::Identity();
   mesh.bc.clear();
   for (int j = 0; j < nc; ++j) {
     const Vector2d du = dQ * mesh.coord.row(j).transpose();
@@ -105,26 +116,26 @@ void conditions(Mesh& mesh, const Params& P) {
 }
 }  // namespace
 
-Analysis setupGrid(const Params& P) {
-  Analysis an = baseAnalysis(P);
-  an.fem = get(P, "fem") == 1;
-  if (an.fem && get(P, "mpType") != 1) throw InputError("fem=1 takes mpType=1 (MPM points)");
-  const Eigen::MatrixX2d X0 = nodes0(P);
-  const Eigen::MatrixXi T = cells(P);
+Analysis setupGrid(const Doughnut& p) {
+  Analysis an = baseAnalysis(p);
+  an.fem = p.fem == 1;
+  if (an.fem && p.mpType != MpType::MPM) throw InputError("fem=1 takes mpType=1 (MPM points)");
+  const Eigen::MatrixX2d X0 = nodes0(p);
+  const Eigen::MatrixXi T = cells(p);
   an.mesh = generalMesh(X0, T);
-  conditions(an.mesh, P);
-  fillCells(an.mpData, an.mesh, P, 0.0);
-  const int nr = int(get(P, "nr")), nc = int(get(P, "nc"));
-  const MpType type = MpType(int(get(P, "mpType")));
+  conditions(an.mesh, p);
+  fillCells(an.mpData, an.mesh, p, 0.0);
+  const int nr = p.nr, nc = p.nc;
+  const MpType type = p.mpType;
   for (int i = 0; i <= nr; ++i) {  // sampling points along theta = 0
     const Vector2d x = X0.row(i * nc).transpose();
     if (an.fem) { an.tagged.push_back(i * nc); continue; }                  // the node itself
     if (type != MpType::CPDI2 && (i == 0 || i == nr)) { an.tagged.push_back(-1 - i); continue; }  // prescribed
     if (type == MpType::CPDI2) {                                            // a corner on it
-      for (size_t p = 0; p < an.mpData.size(); ++p)
+      for (size_t q = 0; q < an.mpData.size(); ++q)
         for (int c = 0; c < 4; ++c)
-          if ((an.mpData[p].cpdi->xc.col(c) - x).norm() < 1e-9 * R && int(an.tagged.size()) == i)
-            an.tagged.push_back(int(4 * p + c));
+          if ((an.mpData[q].cpdi->xc.col(c) - x).norm() < 1e-9 * R && int(an.tagged.size()) == i)
+            an.tagged.push_back(int(4 * q + c));
       continue;
     }
     MaterialPoint pt = an.mpData.front();                                   // extra point: a
@@ -136,15 +147,15 @@ Analysis setupGrid(const Params& P) {
     an.tagged.push_back(int(an.mpData.size()));
     an.mpData.push_back(pt);
   }
-  const double dalpha = get(P, "dalpha") * M_PI / 180, C = 2 * M_PI * holeA(P), E = get(P, "E");
+  const double dalpha = p.dalpha * M_PI / 180, C = 2 * M_PI * holeA(p), E = p.E;
   std::vector<int> inner(nc);
   for (int j = 0; j < nc; ++j) inner[j] = j;
   an.gridMoves = true;                                          // rotated each step (or fem)
   an.beforeStep = [=](Analysis& a, int lstp) {
     if (!a.fem) a.mesh = generalMesh((X0 * rotation(-(lstp - 1) * dalpha).transpose()).eval(), T);
-    conditions(a.mesh, P);
+    conditions(a.mesh, p);
   };
-  const double a = holeA(P), b = holeB(P);  // the hole's perimeter (Ramanujan; 2 pi A for a circle)
+  const double a = holeA(p), b = holeB(p);  // the hole's perimeter (Ramanujan; 2 pi A for a circle)
   const double Ch = M_PI * (3 * (a + b) - std::sqrt((3 * a + b) * (a + 3 * b)));
   an.afterStep = [=](Analysis& a, int lstp, double /*lf: alpha = lstp x dalpha*/) {
     const double f = reactionOver(a.frct, inner).magnitudes;
@@ -159,17 +170,17 @@ Analysis setupGrid(const Params& P) {
   return an;
 }
 
-Results results(const Analysis& an, const Params& P) {
+Results results(const Analysis& an, const Doughnut& p) {
   Results r;
   if (!an.history.empty()) r.push_back({"fNorm", an.history.back()[3].second});
-  const Eigen::MatrixX2d X0 = nodes0(P);
-  const int nc = int(get(P, "nc"));
+  const Eigen::MatrixX2d X0 = nodes0(p);
+  const int nc = p.nc;
   for (size_t i = 0; i < an.tagged.size(); ++i) {
     const int k = an.tagged[i];
     Vector2d u;
     if (an.fem) u = (an.mesh.coord.row(k) - X0.row(k)).transpose();
     else if (k < 0)  // an end node: its prescribed displacement (inner: turned by alpha; outer: 0)
-      u = k == -1 ? Vector2d((rotation(-get(P, "dalpha") * M_PI / 180 * an.history.size()) -
+      u = k == -1 ? Vector2d((rotation(-p.dalpha * M_PI / 180 * an.history.size()) -
                               Eigen::Matrix2d::Identity()) * X0.row(0).transpose())
                   : Vector2d::Zero();
     else if (an.mpData.front().mpType == MpType::CPDI2)
@@ -180,5 +191,8 @@ Results results(const Analysis& an, const Params& P) {
   }
   return r;
 }
+
+// this setup's line in the table of setups/setups.cpp
+SetupCalls calls() { return {params, setupGrid, results}; }
 
 }  // namespace ample::doughnut

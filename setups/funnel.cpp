@@ -23,7 +23,7 @@
 //          results: the same at the last step
 // Tests:   tests/test_ibMoving.cpp
 //--------------------------------------------------------------------------
-#include "ample/meshes/formCoord2D.h"
+#include "formCoord2D.h"
 #include "setupHelpers.h"
 #include <cmath>
 
@@ -42,21 +42,32 @@ static double slope(double x) {  // dH/dx
   return X <= 20 || X >= 50 ? 0.0 : 3.5 * M_PI / 30 * std::sin(M_PI * (X - 20) / 30);
 }
 
-Params params() {
-  Params P = boundariesParams(6, 2);
-  P.push_back(Param("h", 4.0 / 3 * mm).range(0.25 * mm, 4 * mm).help("grid spacing (m)"));
-  P.push_back(Param("normals", 1).choice(0, {"segments", "curve"})
+// the parameters and their defaults (their ranges and help: params)
+struct Funnel : IbCommon {
+  double h = 4.0 / 3 * mm;
+  int normals = 1;                                  // 0 segments, 1 curve
+  double step = 4 * mm;
+  Funnel() {
+    lstps = 6;
+    mp = 2;
+  }
+};
+
+Params params(Funnel& p) {
+  Params P = ibCommonParams(p);
+  param(P, "h", p.h).range(0.25 * mm, 4 * mm).help("grid spacing (m)");
+  param(P, "normals", p.normals).choice(0, {"segments", "curve"})
       .help("normal of K2, K3 on the walls: each segment's own, or the curve's, varying along "
-            "the segment (sec 4)"));
-  P.push_back(Param("step", 4 * mm).range(0, 10 * mm).help("push of the right edge per load step (m)"));
+            "the segment (sec 4)");
+  param(P, "step", p.step).range(0, 10 * mm).help("push of the right edge per load step (m)");
   return P;
 }
 
-Analysis setupGrid(const Params& P) {
-  const double h = get(P, "h"), delta = get(P, "delta");
+Analysis setupGrid(const Funnel& p) {
+  const double h = p.h, delta = p.delta;
   const Vector2d o(24 * mm, 16 * mm);                             // funnel axes: x - 24, y - 16 mm
   const int nx = int(std::ceil(114 * mm / h)), ny = int(std::ceil(32 * mm / h));
-  Analysis an = baseAnalysis(P);
+  Analysis an = baseAnalysis(p);
   an.mesh = formCoord2D(nx, ny, nx * h, ny * h);
   auto wall = [&](double x, double side) { return Vector2d(o + Vector2d(x, side * halfHeight(x))); };
   std::vector<Vector2d> top, bottom, nTop, nBottom;               // walls: a point per grid line
@@ -69,27 +80,27 @@ Analysis setupGrid(const Params& P) {
     nTop.insert(nTop.begin(), Vector2d(slope(x), -1).normalized());
   }
   const double xr = 84 * mm;
-  const bool curve = get(P, "normals") == 1;
+  const bool curve = p.normals == 1;
   addBoundary(an, bottom, BoundaryType::Roller, delta).curveNormal = curve ? nBottom : Polygon{};
   addBoundary(an, {wall(xr, -1), wall(xr, 1)}, BoundaryType::PrescribedNormal, delta)
-      .du = {Vector2d(-get(P, "step"), 0)};
+      .du = {Vector2d(-p.step, 0)};
   addBoundary(an, top, BoundaryType::Roller, delta).curveNormal = curve ? nTop : Polygon{};
-  ibSettings(an, P);
+  ibSettings(an, p);
   Polygon body{wall(40 * mm, -1)};                                // the body: x in [40, 84] mm
-  for (const Vector2d& p : bottom)
-    if (p(0) - o(0) > 40 * mm && p(0) - o(0) < xr) body.push_back(p);
+  for (const Vector2d& x : bottom)
+    if (x(0) - o(0) > 40 * mm && x(0) - o(0) < xr) body.push_back(x);
   body.push_back(wall(xr, -1)), body.push_back(wall(xr, 1));
-  for (const Vector2d& p : top)
-    if (p(0) - o(0) > 40 * mm && p(0) - o(0) < xr) body.push_back(p);
+  for (const Vector2d& x : top)
+    if (x(0) - o(0) > 40 * mm && x(0) - o(0) < xr) body.push_back(x);
   body.push_back(wall(40 * mm, 1));
-  fillPolygon(an.mpData, Vector2d::Zero(), nx, ny, an.mesh.h, P, 0.0, body);
-  an.afterStep = [step = get(P, "step"), h](Analysis& a, int lstp, double /*lf: push = step x lstp*/) {
+  fillPolygon(an.mpData, Vector2d::Zero(), nx, ny, an.mesh.h, p, 0.0, body);
+  an.afterStep = [step = p.step, h](Analysis& a, int lstp, double /*lf: push = step x lstp*/) {
     int outside = 0;
     double worst = 0;                                             // most negative signed distance
     for (const MaterialPoint& mp : a.mpData)
       for (int w : {0, 2})                                        // the walls
-        for (int s = 0; s < a.boundaries[w].segments(); ++s) {
-          const Boundary& b = a.boundaries[w];
+        for (int s = 0; s < boundariesOf(a)[w].segments(); ++s) {
+          const Boundary& b = boundariesOf(a)[w];
           const double xa = std::min(b.x[s](0), b.x[s + 1](0)), xb = std::max(b.x[s](0), b.x[s + 1](0));
           if (mp.mpC(0) < xa || mp.mpC(0) > xb) continue;
           const double phi = signedDistance(b, s, mp.mpC);
@@ -102,12 +113,15 @@ Analysis setupGrid(const Params& P) {
   return an;
 }
 
-Results results(const Analysis& an, const Params&) {
+Results results(const Analysis& an, const Funnel&) {
   if (an.history.empty()) return {};
   double outside = 0, worst = 0;
   for (const auto& row : an.history) outside += row[2].second, worst = std::min(worst, row[3].second);
   return {{"push", an.history.back()[1].second}, {"outside", outside}, {"worst_m", worst},
           {"load_kN", an.history.back()[4].second}, {"points", double(an.mpData.size())}};
 }
+
+// this setup's line in the table of setups/setups.cpp
+SetupCalls calls() { return {params, setupGrid, results}; }
 
 }  // namespace ample::funnel

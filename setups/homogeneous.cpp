@@ -10,7 +10,7 @@
 
 namespace ample {
 
-Vector6d homogeneousStep(const Matrix3d& dF, Vector6d& epsE, const Vector3d& mCst, CmType cm) {
+Vector6d homogeneousStep(const Matrix3d& dF, Vector6d& epsE, const MaterialConstants& mCst, CmType cm) {
   const Matrix3d bT = dF * symExp(2.0 * strainToTensor(epsE)) * dF.transpose();
   const Vector6d epsTr = tensorToStrain(0.5 * symLog(bT));
   const ConstOut out = (cm == CmType::Elastic) ? Hooke3d(epsTr, mCst) : VMconst(epsTr, mCst);

@@ -15,6 +15,6 @@
 
 namespace ample {
 
-Vector6d homogeneousStep(const Matrix3d& dF, Vector6d& epsE, const Vector3d& mCst, CmType cm);
+Vector6d homogeneousStep(const Matrix3d& dF, Vector6d& epsE, const MaterialConstants& mCst, CmType cm);
 
 }  // namespace ample

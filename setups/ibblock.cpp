@@ -18,7 +18,7 @@
 //          sxx_mean (MPa), points
 // Tests:   tests/test_ibStiffness.cpp
 //--------------------------------------------------------------------------
-#include "ample/meshes/formCoord2D.h"
+#include "formCoord2D.h"
 #include "setupHelpers.h"
 #include <cmath>
 
@@ -26,39 +26,48 @@ namespace ample::ibblock {
 
 static const double L = 0.1;  // block side (m)
 
-Params params() {
-  Params P = boundariesParams(1, 1);
-  for (Param& p : P)  // results() compares with the one-push solution: a second step pushes again
-    if (p.name == "lstps") p.integer(1, 1).help("load steps: one (the exact solution is that of one push du)");
-  P.push_back(Param("theta", 0).range(-360, 360).help("rotation of the block to the grid (degrees)"));
-  P.push_back(Param("h", 0.01).range(1e-4, 0.05).help("grid spacing (m); L / h should be a whole number"));
-  P.push_back(Param("du", 1e-3).range(0, 0.05).help("push of the fourth side (m), in one load step"));
+// the parameters and their defaults (their ranges and help: params)
+struct Ibblock : IbCommon {
+  double theta = 0, h = 0.01, du = 1e-3;
+  Ibblock() {
+    lstps = 1;
+    mp = 1;
+  }
+};
+
+Params params(Ibblock& p) {
+  Params P = ibCommonParams(p);
+  // results() compares with the one-push solution: a second step pushes again
+  P.named("lstps").integer(1, 1).help("load steps: one (the exact solution is that of one push du)");
+  param(P, "theta", p.theta).range(-360, 360).help("rotation of the block to the grid (degrees)");
+  param(P, "h", p.h).range(1e-4, 0.05).help("grid spacing (m); L / h should be a whole number");
+  param(P, "du", p.du).range(0, 0.05).help("push of the fourth side (m), in one load step");
   return P;
 }
 
-Analysis setupGrid(const Params& P) {
-  const double h = get(P, "h"), delta = get(P, "delta");
+Analysis setupGrid(const Ibblock& p) {
+  const double h = p.h, delta = p.delta;
   const int N = int(std::ceil((L / std::sqrt(2.0) + h) / h - 1e-9));  // half the grid, in cells
-  Analysis an = baseAnalysis(P);
+  Analysis an = baseAnalysis(p);
   an.mesh = formCoord2D(2 * N, 2 * N, 2 * N * h, 2 * N * h);
-  const Eigen::Matrix2d R = rotationDegrees(get(P, "theta"));
+  const Eigen::Matrix2d R = rotationDegrees(p.theta);
   const Vector2d c(N * h, N * h);                                   // centre of the block
   auto corner = [&](double x, double y) { return Vector2d(c + R * Vector2d(x - L / 2, y - L / 2)); };
   const Vector2d a = corner(0, 0), b = corner(L, 0), d = corner(L, L), e = corner(0, L);
   addBoundary(an, {a, b}, BoundaryType::Roller, delta);             // bottom
-  addBoundary(an, {b, d}, BoundaryType::PrescribedNormal, delta).du = {R * Vector2d(-get(P, "du"), 0)};
+  addBoundary(an, {b, d}, BoundaryType::PrescribedNormal, delta).du = {R * Vector2d(-p.du, 0)};
   addBoundary(an, {d, e}, BoundaryType::Roller, delta);             // top
   addBoundary(an, {e, a}, BoundaryType::Roller, delta);             // left (fixed side)
-  ibSettings(an, P);
-  fillPolygon(an.mpData, Vector2d::Zero(), 2 * N, 2 * N, an.mesh.h, P, 0.0, solidPolygon(an.boundaries));
+  ibSettings(an, p);
+  fillPolygon(an.mpData, Vector2d::Zero(), 2 * N, 2 * N, an.mesh.h, p, 0.0, solidPolygon(boundariesOf(an)));
   return an;
 }
 
-Results results(const Analysis& an, const Params& P) {
-  const double E = get(P, "E"), nu = get(P, "nu"), eps = get(P, "du") / L;
-  const Eigen::Matrix2d R = rotationDegrees(get(P, "theta"));
-  const double N = std::ceil((L / std::sqrt(2.0) + get(P, "h")) / get(P, "h") - 1e-9);
-  const Vector2d a = Vector2d(N, N) * get(P, "h") - R * Vector2d(L / 2, L / 2);  // fixed corner
+Results results(const Analysis& an, const Ibblock& p) {
+  const double E = p.E, nu = p.nu, eps = p.du / L;
+  const Eigen::Matrix2d R = rotationDegrees(p.theta);
+  const double N = std::ceil((L / std::sqrt(2.0) + p.h) / p.h - 1e-9);
+  const Vector2d a = Vector2d(N, N) * p.h - R * Vector2d(L / 2, L / 2);  // fixed corner
   const double k = -eps * E / ((1 + nu) * (1 - 2 * nu));
   const double sxx = k * (1 - nu), syy = k * nu;                    // exact, block axes
   double V = 0, ru = 0, rx = 0, ry = 0, mean = 0;
@@ -87,5 +96,8 @@ Results results(const Analysis& an, const Params& P) {
   }
   return r;
 }
+
+// this setup's line in the table of setups/setups.cpp
+SetupCalls calls() { return {params, setupGrid, results}; }
 
 }  // namespace ample::ibblock

@@ -34,7 +34,7 @@
 // Tests:   tests/test_ibCantilever.cpp
 //--------------------------------------------------------------------------
 #include "ample/errors.h"
-#include "ample/meshes/formCoord2D.h"
+#include "formCoord2D.h"
 #include "setupHelpers.h"
 #include <cmath>
 #include <cstdio>
@@ -43,17 +43,25 @@ namespace ample::ibcantilever {
 
 static const double L = 0.1, d = 0.02, strip = 0.002;  // beam (m); free-end strip (m)
 
-Params params() {
-  Params P = boundariesParams(10, 10);  // 10 steps: 20 meet a cell-crossing mechanism (docs);
-                                     // 10 x 10 points per cell: the paper's 100
-  P.push_back(Param("theta", 0).range(-360, 360)
-                  .help("rotation of the whole model to the grid (degrees, anticlockwise, about the free end's lower "
-                        "corner, a grid node); the beam runs from the free end x' = 0 to the fixed end x' = 100 mm"));
-  P.push_back(Param("h", 0.002).range(2.5e-4, 0.01)
-                  .help("grid spacing (m); d / h = 0.02 / h whole keeps the 0 and 90 degree faces on grid lines"));
-  P.push_back(Param("b", 2e8).atLeast(0)
-                  .help("body force at full load along the beam's own -y' (N/m3; the paper: 0.2 N/mm2 = 2e8); "
-                        "the free-end figures are means over the points within 2 mm of the free end"));
+// the parameters and their defaults (their ranges and help: params)
+struct Ibcantilever : IbCommon {
+  double theta = 0, h = 0.002, b = 2e8;
+  Ibcantilever() {
+    lstps = 10;                      // 20 meet a cell-crossing mechanism (docs)
+    mp = 10;                         // 10 x 10 points per cell: the paper's 100
+  }
+};
+
+Params params(Ibcantilever& p) {
+  Params P = ibCommonParams(p);
+  param(P, "theta", p.theta).range(-360, 360)
+      .help("rotation of the whole model to the grid (degrees, anticlockwise, about the free end's lower "
+            "corner, a grid node); the beam runs from the free end x' = 0 to the fixed end x' = 100 mm");
+  param(P, "h", p.h).range(2.5e-4, 0.01)
+      .help("grid spacing (m); d / h = 0.02 / h whole keeps the 0 and 90 degree faces on grid lines");
+  param(P, "b", p.b).atLeast(0)
+      .help("body force at full load along the beam's own -y' (N/m3; the paper: 0.2 N/mm2 = 2e8); "
+            "the free-end figures are means over the points within 2 mm of the free end");
   return P;
 }
 
@@ -69,9 +77,9 @@ struct Layout { Vector2d O; int nelsx, nelsy; };
 // The room grows with the deflection b / E: a tip deflection above the beam's length L is
 // outside small-strain beam theory and would size the grid without bound, so it is refused
 // (InputError naming b and E and the values that fit).
-static Layout layout(const Params& P) {
-  const double h = get(P, "h"), b = get(P, "b"), E = get(P, "E");
-  const double w = beamTheory(0, b, E, get(P, "nu"));
+static Layout layout(const Ibcantilever& p) {
+  const double h = p.h, b = p.b, E = p.E;
+  const double w = beamTheory(0, b, E, p.nu);
   if (!(w <= L)) {                                                   // (also NaN)
     char msg[400];
     std::snprintf(msg, sizeof msg, "b = %g N/m3 with E = %g Pa: beam theory's tip deflection %.3g m exceeds "
@@ -81,7 +89,7 @@ static Layout layout(const Params& P) {
   }
   const double slope = 2 * w / L;                                    // > the tip rotation
   const double x0 = -(1.3 * slope * d + 2 * h), y0 = -(1.3 * w + 2 * h);  // room to deflect
-  const Eigen::Matrix2d R = rotationDegrees(get(P, "theta"));
+  const Eigen::Matrix2d R = rotationDegrees(p.theta);
   Vector2d lo = Vector2d::Constant(INFINITY), hi = -lo;
   for (const Vector2d& c : {Vector2d(x0, y0), Vector2d(L + 2 * h, y0), Vector2d(L + 2 * h, d + 2 * h),
                             Vector2d(x0, d + 2 * h)}) {
@@ -91,25 +99,25 @@ static Layout layout(const Params& P) {
   return {Vector2d(i0 * h, j0 * h), i0 + int(std::ceil(hi(0) / h - 1e-9)), j0 + int(std::ceil(hi(1) / h - 1e-9))};
 }
 
-Analysis setupGrid(const Params& P) {
-  const double h = get(P, "h"), b = get(P, "b");
-  const Layout g = layout(P);
-  const Eigen::Matrix2d R = rotationDegrees(get(P, "theta"));
-  Analysis an = baseAnalysis(P);
+Analysis setupGrid(const Ibcantilever& p) {
+  const double h = p.h, b = p.b;
+  const Layout g = layout(p);
+  const Eigen::Matrix2d R = rotationDegrees(p.theta);
+  Analysis an = baseAnalysis(p);
   an.mesh = formCoord2D(g.nelsx, g.nelsy, g.nelsx * h, g.nelsy * h);
   auto at = [&](double x, double y) { return Vector2d(g.O + R * Vector2d(x, y)); };
   const Polygon beam = {at(0, 0), at(L, 0), at(L, d), at(0, d)};     // anticlockwise
-  addBoundary(an, {beam[1], beam[2]}, BoundaryType::Fixed, get(P, "delta"));  // the support
-  ibSettings(an, P);
+  addBoundary(an, {beam[1], beam[2]}, BoundaryType::Fixed, p.delta);  // the support
+  ibSettings(an, p);
   Vector2d lo = beam[0], hi = beam[0];                               // the cells round the beam
   for (const Vector2d& c : beam) lo = lo.cwiseMin(c), hi = hi.cwiseMax(c);
   const Eigen::Vector2i c0 = (lo / h).array().floor().cast<int>() - 1;
   const Eigen::Vector2i c1 = (hi / h).array().ceil().cast<int>() + 1;
-  fillPolygon(an.mpData, c0.cast<double>() * h, c1(0) - c0(0), c1(1) - c0(1), an.mesh.h, P, 0.0, beam);
+  fillPolygon(an.mpData, c0.cast<double>() * h, c1(0) - c0(0), c1(1) - c0(1), an.mesh.h, p, 0.0, beam);
   const Vector2d dir = R * Vector2d(0, -1);                          // -y'
   for (MaterialPoint& mp : an.mpData) mp.fp = b * mp.vp0 * dir;      // body force as fp (eq 27)
 
-  const double E = get(P, "E"), nu = get(P, "nu");
+  const double E = p.E, nu = p.nu;
   an.afterStep = [R, O = g.O, b, E, nu, tol = an.tol](Analysis& a, int lstp, double lf) {
     Vector2d uTip = Vector2d::Zero(), F = Vector2d::Zero(), Rct = Vector2d::Zero();
     double V = 0, wTip = 0;
@@ -137,7 +145,7 @@ Analysis setupGrid(const Params& P) {
   return an;
 }
 
-Results results(const Analysis& an, const Params&) {
+Results results(const Analysis& an, const Ibcantilever&) {
   if (an.history.empty()) return {{"points", double(an.mpData.size())}};
   Results r;
   for (const auto& kv : an.history.back())
@@ -153,5 +161,8 @@ Results results(const Analysis& an, const Params&) {
   r.push_back({"points", double(an.mpData.size())});
   return r;
 }
+
+// this setup's line in the table of setups/setups.cpp
+SetupCalls calls() { return {params, setupGrid, results}; }
 
 }  // namespace ample::ibcantilever

@@ -21,7 +21,7 @@
 //          (the largest at a point), ru (eq 29), sxy_mean_MPa, points
 // Tests:   tests/test_ibSetups.cpp
 //--------------------------------------------------------------------------
-#include "ample/meshes/formCoord2D.h"
+#include "formCoord2D.h"
 #include "setupHelpers.h"
 #include <algorithm>
 #include <cmath>
@@ -30,34 +30,42 @@ namespace ample::ibshear {
 
 static const double L = 0.1;  // side of the body and of the cells (m)
 
-Params params() {
-  Params P = boundariesParams(1, 20);
-  for (Param& p : P) {
-    if (p.name == "mp") p.help("material points across the body in each direction (the paper: 20)");
-    if (p.name == "lstps")  // the grid is one body high: the sheared points leave it after step 1
-      p.integer(1, 1).help("load steps: one (the sheared body's top points leave the one-cell-high grid)");
+// the parameters and their defaults (their ranges and help: params)
+struct Ibshear : IbCommon {
+  double xA = 0.0, dv = 0.01;
+  Ibshear() {
+    lstps = 1;
+    mp = 20;
   }
-  P.push_back(Param("xA", 0.0).range(0, L)
-                  .help("position of the fixed left side in the two 100 mm cells (m), 0 to 0.1"));
-  P.push_back(Param("dv", 0.01).range(-0.05, 0.05).help("shear displacement of the right side (m)"));
+};
+
+Params params(Ibshear& p) {
+  Params P = ibCommonParams(p);
+  // the grid is one body high: the sheared points leave it after step 1
+  P.named("lstps").integer(1, 1)
+      .help("load steps: one (the sheared body's top points leave the one-cell-high grid)");
+  P.named("mp").help("material points across the body in each direction (the paper: 20)");
+  param(P, "xA", p.xA).range(0, L)
+      .help("position of the fixed left side in the two 100 mm cells (m), 0 to 0.1");
+  param(P, "dv", p.dv).range(-0.05, 0.05).help("shear displacement of the right side (m)");
   return P;
 }
 
-Analysis setupGrid(const Params& P) {
-  const double xA = get(P, "xA"), delta = get(P, "delta");
-  Analysis an = baseAnalysis(P);
+Analysis setupGrid(const Ibshear& p) {
+  const double xA = p.xA, delta = p.delta;
+  Analysis an = baseAnalysis(p);
   an.mesh = formCoord2D(2, 1, 2 * L, L);
   fixDofs(an.mesh, 0, [&](double, double Y) { return Y < 1e-9 * L || Y > L * (1 - 1e-9); });
   addBoundary(an, {{xA, L}, {xA, 0.0}}, BoundaryType::Fixed, delta);          // left: solid at x > xA
-  addBoundary(an, {{xA + L, 0.0}, {xA + L, L}}, BoundaryType::Prescribed, delta).du = {{0.0, get(P, "dv")}};
-  ibSettings(an, P);
-  fillBlock(an.mpData, Vector2d(xA, 0.0), 1, 1, Vector2d(L, L), P, 0.0);    // the body's points
+  addBoundary(an, {{xA + L, 0.0}, {xA + L, L}}, BoundaryType::Prescribed, delta).du = {{0.0, p.dv}};
+  ibSettings(an, p);
+  fillBlock(an.mpData, Vector2d(xA, 0.0), 1, 1, Vector2d(L, L), p, 0.0);    // the body's points
   return an;
 }
 
-Results results(const Analysis& an, const Params& P) {
-  const double E = get(P, "E"), nu = get(P, "nu"), xA = get(P, "xA");
-  const double gamma = get(P, "dv") / L, sxy = E / (2 * (1 + nu)) * gamma;
+Results results(const Analysis& an, const Ibshear& p) {
+  const double E = p.E, nu = p.nu, xA = p.xA;
+  const double gamma = p.dv / L, sxy = E / (2 * (1 + nu)) * gamma;
   double V = 0, r = 0, rMax = 0, ru = 0, mean = 0;
   for (const MaterialPoint& mp : an.mpData) {
     const double e = std::abs(mp.sig(3) - sxy) / std::abs(sxy);    // eq 30 at the point
@@ -77,5 +85,8 @@ Results results(const Analysis& an, const Params& P) {
     }
   return res;
 }
+
+// this setup's line in the table of setups/setups.cpp
+SetupCalls calls() { return {params, setupGrid, results}; }
 
 }  // namespace ample::ibshear

@@ -29,7 +29,7 @@
 // Tests:   tests/test_benchmarks.cpp, CTest setup.lame
 //--------------------------------------------------------------------------
 #include "ample/errors.h"
-#include "ample/meshes/formCoord2D.h"
+#include "formCoord2D.h"
 #include "setupHelpers.h"
 #include <cmath>
 
@@ -37,34 +37,42 @@ namespace ample::lame {
 
 static const double a = 1.0, b = 2.0;     // inner and outer radii (m)
 
-// the exact radial displacement at r
-static double urExact(double r, const Params& P) {
-  const double E = get(P, "E"), nu = get(P, "nu"), p = get(P, "p");
-  return (1 + nu) * p * a * a / (E * (b * b - a * a)) * ((1 - 2 * nu) * r + b * b / r);
-}
+// the parameters and their defaults (their ranges and help: params)
+struct Lame : Common {
+  int nels = 4;
+  double p = 10e3;
+  Lame() {
+    formulation = Formulation::SS;                 // one step of the linear problem
+    mpType = MpType::MPM;
+    E = 10e6;
+    nu = 0.3;
+  }
+};
 
-Params params() {
-  Params P = commonParams(1);
-  setDefault(P, "formulation", 3);                 // SS: one step of the linear problem
-  setDefault(P, "mpType", 1);                      // MPM
-  setDefault(P, "E", 10e6);
-  setDefault(P, "nu", 0.3);
-  P.push_back(Param("nels", 4).integer(1, 256).help("cells across the wall: h = (b - a) / nels, a = 1 m, b = 2 m"));
-  P.push_back(Param("p", 10e3).above(0).atMost(1e6).help("internal pressure (Pa)"));
+Params params(Lame& l) {
+  Params P = commonParams(l);
+  param(P, "nels", l.nels).integer(1, 256).help("cells across the wall: h = (b - a) / nels, a = 1 m, b = 2 m");
+  param(P, "p", l.p).above(0).atMost(1e6).help("internal pressure (Pa)");
   return P;
 }
 
-Analysis setupGrid(const Params& P) {
-  const MpType type = MpType(int(get(P, "mpType")));
+// the exact radial displacement at r
+static double urExact(double r, const Lame& l) {
+  const double E = l.E, nu = l.nu, p = l.p;
+  return (1 + nu) * p * a * a / (E * (b * b - a * a)) * ((1 - 2 * nu) * r + b * b / r);
+}
+
+Analysis setupGrid(const Lame& l) {
+  const MpType type = l.mpType;
   if (type != MpType::MPM && type != MpType::CPDI2)
-    throw InputError("lame: mpType=" + number(get(P, "mpType")) +
+    throw InputError("lame: mpType=" + number(int(l.mpType)) +
                      " is not allowed: the points lie in polar rings; use mpType=MPM or CPDI2");
-  const int nels = int(get(P, "nels")), mp = int(get(P, "mp")), nr = mp * nels;
-  const double h = (b - a) / nels, dr = (b - a) / nr, p = get(P, "p");
+  const int nels = l.nels, mp = l.mp, nr = mp * nels;
+  const double h = (b - a) / nels, dr = (b - a) / nr, p = l.p;
   const int nt = std::max(1, int(std::lround(0.5 * M_PI * 0.5 * (a + b) / dr)));
   const double dt = 0.5 * M_PI / nt;
   checkPointMemory(size_t(nr) * nt);
-  Analysis an = baseAnalysis(P);
+  Analysis an = baseAnalysis(l);
   const int n = 2 * nels + 1;                       // b / h cells and one past the ring
   an.mesh = formCoord2D(n, n, n * h, n * h);
   const double eps = 1e-9 * h;
@@ -74,7 +82,7 @@ Analysis setupGrid(const Params& P) {
     for (int j = 0; j < nt; ++j) {
       const double r0 = a + i * dr, rc = r0 + dr / 2, t0 = j * dt, tc = t0 + dt / 2;
       const Vector2d er(std::cos(tc), std::sin(tc));
-      MaterialPoint pt = cellPoint(rc * er, rc * dr * dt, P, 1.0);
+      MaterialPoint pt = cellPoint(rc * er, rc * dr * dt, l, 1.0);
       if (type == MpType::CPDI2) {                                  // the sector's corners
         const double rr[4] = {r0, r0 + dr, r0 + dr, r0}, tt[4] = {t0, t0, t0 + dt, t0 + dt};
         for (int c = 0; c < 4; ++c) pt.cpdi->xc.col(c) = rr[c] * Vector2d(std::cos(tt[c]), std::sin(tt[c]));
@@ -89,15 +97,15 @@ Analysis setupGrid(const Params& P) {
   return an;
 }
 
-Results results(const Analysis& an, const Params& P) {
-  const double nu = get(P, "nu"), p = get(P, "p"), k = p * a * a / (b * b - a * a);
-  const double uMax = urExact(a, P);                                // u_r,a is largest at r = a
+Results results(const Analysis& an, const Lame& l) {
+  const double nu = l.nu, p = l.p, k = p * a * a / (b * b - a * a);
+  const double uMax = urExact(a, l);                                // u_r,a is largest at r = a
   double inner = 0, ur = 0, urA = 0, errMax = 0, s2 = 0;
   int nIn = 0;
   const double rIn = an.mpData.empty() ? 0 : an.mpData.front().X0.norm();
   for (const MaterialPoint& mp : an.mpData) {
     const double r = mp.X0.norm(), c = mp.X0(0) / r, s = mp.X0(1) / r;
-    const double uA = urExact(r, P);
+    const double uA = urExact(r, l);
     errMax = std::max(errMax, (mp.u - uA * mp.X0 / r).norm() / uMax);
     if (std::abs(r - rIn) < 1e-9) {
       const double uR = mp.u(0) * c + mp.u(1) * s;
@@ -117,5 +125,8 @@ Results results(const Analysis& an, const Params& P) {
           {"stress_rms", std::sqrt(s2 / an.mpData.size()) / p},
           {"ur_inner", ur / nIn}, {"ur_inner_a", urA / nIn}, {"points", double(an.mpData.size())}};
 }
+
+// this setup's line in the table of setups/setups.cpp
+SetupCalls calls() { return {params, setupGrid, results}; }
 
 }  // namespace ample::lame

@@ -30,7 +30,7 @@
 // Tests:   tests/test_benchmarks.cpp, CTest setup.layer
 //--------------------------------------------------------------------------
 #include "ample/errors.h"
-#include "ample/meshes/formCoord2D.h"
+#include "formCoord2D.h"
 #include "setupHelpers.h"
 #include <cmath>
 #include <map>
@@ -39,39 +39,49 @@ namespace ample::layer {
 
 static const double H = 10.0;             // layer depth (m)
 
-Params params() {
-  Params P = commonParams(1);
-  setDefault(P, "formulation", 3);        // SS: one step of the linear problem
-  setDefault(P, "E", 100e6);
-  setDefault(P, "nu", 0.49);
-  P.push_back(Param("nels", 4).integer(1, 256).help("cells over the depth: h = H / nels, H = 10 m"));
-  P.push_back(Param("width", 6).integer(1, 20).help("half width W / H"));
-  P.push_back(Param("sides", 1).choice(0, {"roller", "free"})
-                  .help("far side x = W: roller (laterally confined, exact 1-D state) or free"));
-  P.push_back(Param("margin", 1).integer(1, 16).help("grid cells past a free side"));
-  P.push_back(Param("rho", 2000).above(0).help("density (kg/m3)"));
-  P.push_back(Param("g", 10).above(0).help("gravitational acceleration (m/s2)"));
+// the parameters and their defaults (their ranges and help: params)
+struct Layer : Common {
+  int nels = 4, width = 6;
+  int sides = 1;                          // 0 roller, 1 free
+  int margin = 1;
+  double rho = 2000, g = 10;
+  Layer() {
+    formulation = Formulation::SS;        // one step of the linear problem
+    E = 100e6;
+    nu = 0.49;
+  }
+};
+
+Params params(Layer& p) {
+  Params P = commonParams(p);
+  param(P, "nels", p.nels).integer(1, 256).help("cells over the depth: h = H / nels, H = 10 m");
+  param(P, "width", p.width).integer(1, 20).help("half width W / H");
+  param(P, "sides", p.sides).choice(0, {"roller", "free"})
+      .help("far side x = W: roller (laterally confined, exact 1-D state) or free");
+  param(P, "margin", p.margin).integer(1, 16).help("grid cells past a free side");
+  param(P, "rho", p.rho).above(0).help("density (kg/m3)");
+  param(P, "g", p.g).above(0).help("gravitational acceleration (m/s2)");
   return P;
 }
 
-Analysis setupGrid(const Params& P) {
-  const int nels = int(get(P, "nels")), nx = nels * int(get(P, "width"));
-  const bool free = get(P, "sides") == 1;
-  const int extra = free ? int(get(P, "margin")) : 0;
+Analysis setupGrid(const Layer& p) {
+  const int nels = p.nels, nx = nels * p.width;
+  const bool free = p.sides == 1;
+  const int extra = free ? p.margin : 0;
   const double h = H / nels, W = nx * h, eps = 1e-9 * h;
-  Analysis an = baseAnalysis(P);
-  an.g = get(P, "g");
+  Analysis an = baseAnalysis(p);
+  an.g = p.g;
   an.mesh = formCoord2D(nx + extra, nels + 1, (nx + extra) * h, H + h);  // a row above the top
   fixDofs(an.mesh, 0, [&](double X, double Y) { return X < eps || Y < eps || (!free && X > W - eps); });
   fixDofs(an.mesh, 1, [&](double, double Y) { return Y < eps; });
-  fillBlock(an.mpData, Vector2d::Zero(), nx, nels, an.mesh.h, P, get(P, "rho"));
+  fillBlock(an.mpData, Vector2d::Zero(), nx, nels, an.mesh.h, p, p.rho);
   return an;
 }
 
-Results results(const Analysis& an, const Params& P) {
-  const double rho = get(P, "rho"), g = get(P, "g"), nu = get(P, "nu"), K0 = nu / (1 - nu);
-  const double scale = rho * g * H, h = H / get(P, "nels"), W = h * get(P, "nels") * get(P, "width");
-  const bool free = get(P, "sides") == 1;
+Results results(const Analysis& an, const Layer& l) {
+  const double rho = l.rho, g = l.g, nu = l.nu, K0 = nu / (1 - nu);
+  const double scale = rho * g * H, h = H / l.nels, W = h * l.nels * l.width;
+  const bool free = l.sides == 1;
   auto p = [](const MaterialPoint& mp) { return (mp.sig(0) + mp.sig(1) + mp.sig(2)) / 3; };
   auto cell = [&](const MaterialPoint& mp) {                        // the cell of its start
     return int(std::floor(mp.X0(1) / h)) * 100000 + int(std::floor(mp.X0(0) / h));
@@ -118,5 +128,8 @@ Results results(const Analysis& an, const Params& P) {
   }
   return r;
 }
+
+// this setup's line in the table of setups/setups.cpp
+SetupCalls calls() { return {params, setupGrid, results}; }
 
 }  // namespace ample::layer

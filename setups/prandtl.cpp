@@ -30,7 +30,7 @@
 // Tests:   tests/test_benchmarks.cpp, CTest setup.prandtl
 //--------------------------------------------------------------------------
 #include "ample/errors.h"
-#include "ample/meshes/formCoord2D.h"
+#include "formCoord2D.h"
 #include "setupHelpers.h"
 #include <cmath>
 
@@ -39,44 +39,55 @@ namespace ample::prandtl {
 static const double B = 1.0;                       // footing width (m)
 static const double cuDefault = 10e3;              // c_u (Pa)
 
-Params params() {
-  Params P = commonParams(15);
-  setDefault(P, "cmType", 2);                      // von Mises
-  setDefault(P, "NRitMax", 30);                    // GIMP at nB = 8 converges slowly in the last steps
-  setDefault(P, "mpType", 1);                      // MPM: GIMP's top domains cross the grid line as the
+// the parameters and their defaults (their ranges and help: params)
+struct Prandtl : Common {
+  double cu = cuDefault;
+  int nB = 4, width = 5, depth = 3;
+  double push = 0.03;
+  int rough = 1;
+  Prandtl() {
+    lstps = 15;
+    cmType = CmType::VonMises;
+    NRitMax = 30;                                  // GIMP at nB = 8 converges slowly in the last steps
+    mpType = MpType::MPM;                          // MPM: GIMP's top domains cross the grid line as the
                                                    // surface heaves (locking=Fbar at nu = 0.3 stops there)
-  setDefault(P, "formulation", 3);                 // SS: a limit load needs no large deformation
-  setDefault(P, "E", 10e6);
-  setDefault(P, "nu", 0.3);
-  setDefault(P, "rhoY", std::sqrt(2.0) * cuDefault);
-  P.push_back(Param("cu", cuDefault).above(0)
-                  .help("undrained strength c_u (Pa): rho_y = sqrt(2) c_u (leave rhoY at its default)"));
-  P.push_back(Param("nB", 4).integer(1, 64).help("cells across the half footing B/2: h = B / (2 nB), B = 1 m"));
-  P.push_back(Param("width", 5).integer(2, 20).help("half-domain width W / B (the mechanism reaches 1.5 B)"));
-  P.push_back(Param("depth", 3).integer(1, 20).help("domain depth D / B (the mechanism reaches 0.71 B)"));
-  P.push_back(Param("push", 0.03).range(1e-4, 0.2).help("footing settlement / B at the last step"));
-  P.push_back(Param("rough", 1).integer(0, 1).help("1: the footing holds u_x (rough), 0: u_x free (smooth)"));
+    formulation = Formulation::SS;                 // a limit load needs no large deformation
+    E = 10e6;
+    nu = 0.3;
+    rhoY = std::sqrt(2.0) * cuDefault;
+  }
+};
+
+Params params(Prandtl& p) {
+  Params P = commonParams(p);
+  param(P, "cu", p.cu).above(0)
+      .help("undrained strength c_u (Pa): rho_y = sqrt(2) c_u (leave rhoY at its default)");
+  param(P, "nB", p.nB).integer(1, 64).help("cells across the half footing B/2: h = B / (2 nB), B = 1 m");
+  param(P, "width", p.width).integer(2, 20).help("half-domain width W / B (the mechanism reaches 1.5 B)");
+  param(P, "depth", p.depth).integer(1, 20).help("domain depth D / B (the mechanism reaches 0.71 B)");
+  param(P, "push", p.push).range(1e-4, 0.2).help("footing settlement / B at the last step");
+  param(P, "rough", p.rough).integer(0, 1).help("1: the footing holds u_x (rough), 0: u_x free (smooth)");
   return P;
 }
 
-Analysis setupGrid(const Params& P) {
-  const double cu = get(P, "cu");
-  if (std::abs(get(P, "rhoY") - std::sqrt(2.0) * cuDefault) > 1e-9 * cuDefault)
+Analysis setupGrid(const Prandtl& p) {
+  const double cu = p.cu;
+  if (std::abs(p.rhoY - std::sqrt(2.0) * cuDefault) > 1e-9 * cuDefault)
     throw InputError("prandtl: the strength is given by cu (rho_y = sqrt(2) cu); leave rhoY at its default");
-  const int nB = int(get(P, "nB")), nx = 2 * nB * int(get(P, "width")), ny = 2 * nB * int(get(P, "depth"));
+  const int nB = p.nB, nx = 2 * nB * p.width, ny = 2 * nB * p.depth;
   const double h = B / (2 * nB), W = nx * h, D = ny * h, eps = 1e-9 * h;
-  Analysis an = baseAnalysis(P);
+  Analysis an = baseAnalysis(p);
   an.mesh = formCoord2D(nx, ny + 2, W, D + 2 * h);         // two empty rows above the soil
-  const double dv = -get(P, "push") * B / an.lstps;
-  const bool rough = get(P, "rough") == 1;
+  const double dv = -p.push * B / an.lstps;
+  const bool rough = p.rough == 1;
   auto footing = [&](double X, double Y) { return std::abs(Y - D) < eps && X < B / 2 + eps; };
   fixDofs(an.mesh, 0, [&](double X, double Y) { return Y < D + eps && (X < eps || X > W - eps); });
   fixDofs(an.mesh, 0, [&](double X, double Y) { return Y < eps && X > eps && X < W - eps; });  // base
   fixDofs(an.mesh, 1, [&](double, double Y) { return Y < eps; });                              // base
   fixDofs(an.mesh, 1, footing, dv);                                                            // footing
   if (rough) fixDofs(an.mesh, 0, [&](double X, double Y) { return footing(X, Y) && X > eps; });
-  fillBlock(an.mpData, Vector2d::Zero(), nx, ny, an.mesh.h, P, 0.0);   // weightless
-  for (MaterialPoint& mp : an.mpData) mp.mCst(2) = std::sqrt(2.0) * cu;
+  fillBlock(an.mpData, Vector2d::Zero(), nx, ny, an.mesh.h, p, 0.0);   // weightless
+  for (MaterialPoint& mp : an.mpData) mp.mCst.rhoY = std::sqrt(2.0) * cu;
   std::vector<int> nodes;                                              // the footing's nodes
   for (int n = 0; n < an.mesh.nodes(); ++n)
     if (footing(an.mesh.coord(n, 0), an.mesh.coord(n, 1))) nodes.push_back(n);
@@ -88,7 +99,7 @@ Analysis setupGrid(const Params& P) {
   return an;
 }
 
-Results results(const Analysis& an, const Params& P) {
+Results results(const Analysis& an, const Prandtl& p) {
   if (an.history.empty()) return {};
   const double exact = 2 + M_PI, q = an.history.back()[3].second;
   const size_t n = an.history.size(), k = n - std::max<size_t>(1, n / 4) - (n > 1 ? 1 : 0);
@@ -96,10 +107,13 @@ Results results(const Analysis& an, const Params& P) {
   double qMax = 0;                                            // the peak (GIMP falls after it)
   for (const auto& row : an.history) qMax = std::max(qMax, row[3].second);
   const auto& first = an.history.front();                     // q / settlement of the first step
-  const double stiffness = first[3].second * get(P, "cu") / B / first[1].second / (get(P, "E") / B);
+  const double stiffness = first[3].second * p.cu / B / first[1].second / (p.E / B);
   return {{"q_over_cu", q}, {"exact", exact}, {"error", q / exact - 1}, {"q_max_over_cu", qMax},
           {"plateau_change", plateau}, {"first_step_stiffness", stiffness},
           {"points", double(an.mpData.size())}};
 }
+
+// this setup's line in the table of setups/setups.cpp
+SetupCalls calls() { return {params, setupGrid, results}; }
 
 }  // namespace ample::prandtl

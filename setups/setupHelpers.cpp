@@ -4,10 +4,10 @@
 // See setupHelpers.h for inputs and outputs.
 //--------------------------------------------------------------------------
 #include "setupHelpers.h"
-#include "ample/meshes/detMpPos.h"
+#include "detMpPos.h"
 #include "ample/errors.h"
 #include "ample/solver/solverChoice.h"
-#include "ample/meshes/shapefunc.h"
+#include "shapefunc.h"
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -17,31 +17,31 @@
 
 namespace ample {
 
-Analysis baseAnalysis(const Params& P) {
+Analysis baseAnalysis(const Common& p) {
   Analysis an;
-  an.lstps = int(get(P, "lstps"));
-  an.tol = get(P, "tol");
-  an.NRitMax = int(get(P, "NRitMax"));
-  an.solver = LinearSolver(int(get(P, "solver")));
+  an.lstps = p.lstps;
+  an.tol = p.tol;
+  an.NRitMax = p.NRitMax;
+  an.solver = p.solver;
   if (an.solver != LinearSolver::LU) checkSolverBuilt(an.solver);  // one this build lacks: InputError
-  an.substeps = int(get(P, "substeps"));
-  an.ghost = get(P, "ghost");
-  an.split = get(P, "split");
-  an.lone = int(get(P, "lone"));
-  an.formulation = Formulation(int(get(P, "formulation")));
-  an.domainUpdate = DomainUpdate(int(get(P, "domainUpdate")));
-  an.locking = Locking(int(get(P, "locking")));
-  an.geostatic = get(P, "geostatic") == 1;
-  an.K0 = get(P, "K0");
+  an.substeps = p.substeps;
+  an.ghost = p.ghost;
+  an.split = p.split;
+  an.lone = p.lone;
+  an.formulation = p.formulation;
+  an.domainUpdate = p.domainUpdate;
+  an.locking = p.locking;
+  an.geostatic = p.geostatic;
+  an.K0 = p.K0;
   return an;
 }
 
 namespace {
 // one point of fillBlock at x with domain half lengths lp0 (volume 4 lp0_x lp0_y)
-MaterialPoint blockPoint(const Vector2d& x, const Vector2d& lp0, const Params& P, double rho) {
+MaterialPoint blockPoint(const Vector2d& x, const Vector2d& lp0, const Common& p, double rho) {
   MaterialPoint pt;
-  pt.mpType = MpType(int(get(P, "mpType")));
-  pt.cmType = CmType(int(get(P, "cmType")));
+  pt.mpType = p.mpType;
+  pt.cmType = p.cmType;
   pt.mpC = x;
   pt.X0 = pt.mpC;
   pt.lp0 = lp0;
@@ -57,7 +57,9 @@ MaterialPoint blockPoint(const Vector2d& x, const Vector2d& lp0, const Params& P
   if (pt.mpType == MpType::MPM) pt.lp0.setZero();  // standard MPM carries no domain
   pt.lp = pt.lp0;
   pt.mpM = rho * pt.vp0;
-  pt.mCst << get(P, "E"), get(P, "nu"), get(P, "rhoY");
+  pt.mCst.E = p.E;                                 // the constants of Hooke3d and VMconst
+  pt.mCst.nu = p.nu;
+  pt.mCst.rhoY = p.rhoY;
   return pt;
 }
 
@@ -109,13 +111,13 @@ void checkPointMemory(size_t points) {
 }
 
 void fillBlock(std::vector<MaterialPoint>& mpData, const Vector2d& corner, int nelsx, int nelsy,
-               const Vector2d& h, const Params& P, double rho) {
-  const int mp = int(get(P, "mp"));
+               const Vector2d& h, const Common& p, double rho) {
+  const int mp = p.mp;
   const size_t n = mpData.size() + size_t(nelsx) * nelsy * mp * mp;
   checkPointMemory(n);
   if (n > mpData.capacity()) mpData.reserve(std::max(n, 2 * mpData.capacity()));  // amortised
   forBlockPoints(corner, nelsx, nelsy, h, mp, [&](const Vector2d& x, const Vector2d& lp0) {
-    mpData.push_back(blockPoint(x, lp0, P, rho));
+    mpData.push_back(blockPoint(x, lp0, p, rho));
   });
 }
 
@@ -135,16 +137,16 @@ Vector2d quadMap(const Eigen::Matrix<double, 2, 4>& X, double xi, double eta, do
 }
 }  // namespace
 
-MaterialPoint cellPoint(const Vector2d& x, double V, const Params& P, double rho) {
-  MaterialPoint pt = blockPoint(x, Vector2d::Constant(0.5 * std::sqrt(V)), P, rho);
+MaterialPoint cellPoint(const Vector2d& x, double V, const Common& p, double rho) {
+  MaterialPoint pt = blockPoint(x, Vector2d::Constant(0.5 * std::sqrt(V)), p, rho);
   pt.vp0 = pt.vp = V;
   pt.mpM = rho * V;
   return pt;
 }
 
-void fillCells(std::vector<MaterialPoint>& mpData, const Mesh& mesh, const Params& P, double rho,
+void fillCells(std::vector<MaterialPoint>& mpData, const Mesh& mesh, const Common& p, double rho,
                int triPoints) {
-  const MpType type = MpType(int(get(P, "mpType")));
+  const MpType type = p.mpType;
   if (mesh.regular()) throw InputError("fillCells: a general mesh (generalMesh) is needed");
   if (type == MpType::GIMP) throw InputError("mpType=2 (GIMP) needs the regular grid");
   if (triPoints != 1 && triPoints != 3) throw InputError("fillCells: triPoints 1 or 3");
@@ -155,11 +157,11 @@ void fillCells(std::vector<MaterialPoint>& mpData, const Mesh& mesh, const Param
     if (mesh.cellNodes() == 3) {
       if (type != MpType::MPM) throw InputError("fillCells: triangles take standard MPM points only");
       const double A = 0.5 * cross2(X.col(1) - X.col(0), X.col(2) - X.col(0));
-      if (triPoints == 1) mpData.push_back(cellPoint((X.col(0) + X.col(1) + X.col(2)) / 3, A, P, rho));
+      if (triPoints == 1) mpData.push_back(cellPoint((X.col(0) + X.col(1) + X.col(2)) / 3, A, p, rho));
       else
         for (int a = 0; a < 3; ++a)
           mpData.push_back(cellPoint((2.0 / 3) * X.col(a) + (X.col((a + 1) % 3) + X.col((a + 2) % 3)) / 6,
-                                     A / 3, P, rho));
+                                     A / 3, p, rho));
       continue;
     }
     const double g = 1.0 / std::sqrt(3.0);
@@ -168,7 +170,7 @@ void fillCells(std::vector<MaterialPoint>& mpData, const Mesh& mesh, const Param
       double detJ = 0;
       if (type == MpType::MPM) {
         const Vector2d x = quadMap(X, sx * g, sy * g, &detJ);
-        mpData.push_back(cellPoint(x, detJ, P, rho));
+        mpData.push_back(cellPoint(x, detJ, p, rho));
         continue;
       }
       Eigen::Matrix<double, 2, 4> xc;             // the sub-cell's corners, anticlockwise
@@ -178,7 +180,7 @@ void fillCells(std::vector<MaterialPoint>& mpData, const Mesh& mesh, const Param
       xc.col(2) = quadMap(X, x0 + 1, y0 + 1, nullptr);
       xc.col(3) = quadMap(X, x0, y0 + 1, nullptr);
       MaterialPoint pt = cellPoint(quadMap(X, x0 + 0.5, y0 + 0.5, nullptr),
-                                   0.5 * std::abs(cross2(xc.col(2) - xc.col(0), xc.col(3) - xc.col(1))), P, rho);
+                                   0.5 * std::abs(cross2(xc.col(2) - xc.col(0), xc.col(3) - xc.col(1))), p, rho);
       pt.cpdi->xc = xc;                           // type CPDI1 or CPDI2: cellPoint gave a domain
       pt.cpdi->st0.col(0) = 0.5 * (xc.col(1) - xc.col(0) + xc.col(2) - xc.col(3));
       pt.cpdi->st0.col(1) = 0.5 * (xc.col(3) - xc.col(0) + xc.col(2) - xc.col(1));
@@ -217,8 +219,8 @@ Boundary& addBoundary(Analysis& an, std::vector<Vector2d> x, std::vector<Boundar
   b.type = std::move(type);
   b.solid = solid;
   b.delta = deltaOverH * h;
-  an.boundaries.push_back(std::move(b));
-  return an.boundaries.back();
+  editBoundaries(an).push_back(std::move(b));
+  return editBoundaries(an).back();
 }
 
 Boundary& addBoundary(Analysis& an, std::vector<Vector2d> x, BoundaryType type,
@@ -235,29 +237,18 @@ Eigen::Matrix2d rotationDegrees(double theta) {
   return R;
 }
 
-Params ibParams() {
-  return {Param("delta", 1e-6).range(1e-12, 0.5).help("band width of eq 16 as a fraction of h"),
-          Param("ibK2", 1).choice(0, {"paper", "consistent"})
-              .help("K2's inner integral over the d entries of [D1bar]: consistent = 1 (exact for "
-                    "linear fields; reproduces the paper's table I and fig 16), paper = int d d' = "
-                    "1/2 (eqs 21, 26 as printed: shifts each boundary by 3 delta / 8)")};
-}
-
-Params boundariesParams(int lstps, int mp) {
-  Params P = commonParams(lstps);
-  setDefault(P, "tol", 1e-8);
-  setDefault(P, "mp", mp);
-  setDefault(P, "mpType", 1);        // standard MPM ([Boundaries] sec 2)
-  setDefault(P, "formulation", 3);   // SS: small strain, linear elastic (sec 2)
-  setDefault(P, "E", 1e9);
-  setDefault(P, "nu", 0.3);
-  for (const Param& p : ibParams()) P.push_back(p);
+Params ibCommonParams(IbCommon& p) {
+  Params P = commonParams(p);
+  param(P, "delta", p.delta).range(1e-12, 0.5).help("band width of eq 16 as a fraction of h");
+  param(P, "ibK2", p.ibK2).choice(0, {"paper", "consistent"})
+      .help("K2's inner integral over the d entries of [D1bar]: consistent = 1 (exact for "
+            "linear fields; reproduces the paper's table I and fig 16), paper = int d d' = "
+            "1/2 (eqs 21, 26 as printed: shifts each boundary by 3 delta / 8)");
   return P;
 }
 
-void ibSettings(Analysis& an, const Params& P) {
-  for (Boundary& b : an.boundaries)
-    b.coupling = get(P, "ibK2") == 0 ? IbCoupling::Paper : IbCoupling::Consistent;
+void ibSettings(Analysis& an, const IbCommon& p) {
+  for (Boundary& b : editBoundaries(an)) b.coupling = p.ibK2;
 }
 
 Polygon solidPolygon(const std::vector<Boundary>& boundaries) {
@@ -270,25 +261,25 @@ Polygon solidPolygon(const std::vector<Boundary>& boundaries) {
 }
 
 void fillPolygon(std::vector<MaterialPoint>& mpData, const Vector2d& corner, int nelsx,
-                 int nelsy, const Vector2d& h, const Params& P, double rho,
+                 int nelsy, const Vector2d& h, const Common& p, double rho,
                  const Polygon& solid) {
   constexpr double full = 1.0 - 1e-12, none = 1e-12;  // fractions of the domain inside
-  const int mp = int(get(P, "mp"));
+  const int mp = p.mp;
   checkPointMemory(mpData.size() + size_t(nelsx) * nelsy * mp * mp);  // at most
   forBlockPoints(corner, nelsx, nelsy, h, mp, [&](const Vector2d& x, const Vector2d& lp0) {
     Polygon local = solid;  // the solid about the point: the area keeps its digits
-    for (Vector2d& p : local) p -= x;
+    for (Vector2d& q : local) q -= x;
     const Polygon square = {{-lp0(0), -lp0(1)}, {lp0(0), -lp0(1)}, {lp0(0), lp0(1)},
                             {-lp0(0), lp0(1)}};
     const AreaCentroid in = polygonArea(clipPolygon(local, square));
     const double A = 4.0 * lp0(0) * lp0(1), frac = std::abs(in.area) / A;
     if (frac <= none) return;  // wholly outside: removed
     if (frac >= full) {        // wholly inside: fillBlock's point
-      mpData.push_back(blockPoint(x, lp0, P, rho));
+      mpData.push_back(blockPoint(x, lp0, p, rho));
       return;
     }
     // truncated: at the centroid of the part inside, half lengths scaled to its area
-    MaterialPoint pt = blockPoint(x + in.centroid, lp0 * std::sqrt(frac), P, rho);
+    MaterialPoint pt = blockPoint(x + in.centroid, lp0 * std::sqrt(frac), p, rho);
     pt.vp0 = pt.vp = frac * A;  // the area inside the solid
     pt.mpM = rho * pt.vp0;
     mpData.push_back(pt);

@@ -19,22 +19,23 @@
 // points of the boundaries in their order (a gap between two boundaries is a
 // free edge of the solid), so a setup lists them anticlockwise round it.
 // Inputs:  block corner (x0, y0), its cells (nelsx, nelsy), spacing h,
-//          parameters mp, mpType, cmType, E, nu, rhoY · density rho · solid polygon
+//          the setup's mp, mpType, cmType, E, nu, rhoY (Common) · density rho · solid polygon
 // Outputs: points appended to mpData; fixDofs adds Dirichlet conditions;
 //          addBoundary appends to an.boundaries
 // Tests:   tests/test_ample.cpp (setups run), tests/test_detMPs.cpp,
 //          tests/test_boundary.cpp (fillPolygon, addBoundary, solidPolygon)
 //--------------------------------------------------------------------------
 #pragma once
+#include "ample/boundaries/boundary.h"
 #include "ample/meshes/clipPolygon.h"
 #include "setups.h"
 #include <functional>
 
 namespace ample {
 
-// an Analysis with the settings every setup shares: lstps, tol, NRitMax,
-// formulation, domainUpdate (g is set by the setups that have gravity)
-Analysis baseAnalysis(const Params& P);
+// an Analysis with the settings every setup shares: lstps, tol, NRitMax, solver, the remedies,
+// formulation, domainUpdate, locking, geostatic, K0 (g is set by the setups that have gravity)
+Analysis baseAnalysis(const Common& p);
 
 // a parameter value as the command line takes it, e.g. number(32) = "32", number(0.01) = "0.01"
 std::string number(double v);
@@ -43,11 +44,11 @@ std::string number(double v);
 // basis inside) exceed the memory this machine has available
 void checkPointMemory(size_t points);
 void fillBlock(std::vector<MaterialPoint>& mpData, const Vector2d& corner, int nelsx, int nelsy,
-               const Vector2d& h, const Params& P, double rho);
+               const Vector2d& h, const Common& p, double rho);
 
 // fillBlock's points, with those outside `solid` removed and those cut by it truncated
 void fillPolygon(std::vector<MaterialPoint>& mpData, const Vector2d& corner, int nelsx,
-                 int nelsy, const Vector2d& h, const Params& P, double rho,
+                 int nelsy, const Vector2d& h, const Common& p, double rho,
                  const Polygon& solid);
 
 // points in every cell of a general mesh (docs/meshes.md, finite element mode):
@@ -57,8 +58,8 @@ void fillPolygon(std::vector<MaterialPoint>& mpData, const Vector2d& corner, int
 // xi = +-1/2; V = its area; CPDI1: s, t join its mid-edges); triangles: triPoints = 1
 // (centroid, V = A) or 3 (at 2/3, 1/6, 1/6, V = A/3), standard MPM only
 // one point at x of volume V; CPDI1/CPDI2: a square domain of that area about x (MPM: none)
-MaterialPoint cellPoint(const Vector2d& x, double V, const Params& P, double rho);
-void fillCells(std::vector<MaterialPoint>& mpData, const Mesh& mesh, const Params& P, double rho,
+MaterialPoint cellPoint(const Vector2d& x, double V, const Common& p, double rho);
+void fillCells(std::vector<MaterialPoint>& mpData, const Mesh& mesh, const Common& p, double rho,
                int triPoints = 3);
 
 // the reactions of a set of nodes (frct: nDoF, as Analysis::frct): their vector sum and
@@ -81,14 +82,23 @@ Boundary& addBoundary(Analysis& an, std::vector<Vector2d> x, std::vector<Boundar
 // by 90 degrees is the same discretisation)
 Eigen::Matrix2d rotationDegrees(double theta);
 
-// the parameters of every setup with implicit boundaries: delta (band width / h, eq 16)
-// and ibK2 (the K2 coupling: 0 paper, 1 consistent); ibSettings applies ibK2 to an's boundaries
-Params ibParams();
-// commonParams(lstps) with the settings of [Boundaries]'s examples (sec 5): mp points per cell,
-// standard MPM, small strain (SS), E = 1000 MPa, nu = 0.3, tol = 1e-8 (the IB residual
-// floor is ~2e-9 at delta = 1e-6 h), and ibParams
-Params boundariesParams(int lstps, int mp);
-void ibSettings(Analysis& an, const Params& P);
+// the parameters of every setup with implicit boundaries: the common ones with the settings of
+// [Boundaries]'s examples (sec 5): standard MPM, small strain (SS), E = 1000 MPa, nu = 0.3,
+// tol = 1e-8 (the IB residual floor is ~2e-9 at delta = 1e-6 h); and delta (band width / h,
+// eq 16) and ibK2 (the K2 coupling: paper or consistent), which ibSettings gives an's boundaries
+struct IbCommon : Common {
+  double delta = 1e-6;
+  IbCoupling ibK2 = IbCoupling::Consistent;
+  IbCommon() {
+    tol = 1e-8;
+    mpType = MpType::MPM;
+    formulation = Formulation::SS;
+    E = 1e9;
+    nu = 0.3;
+  }
+};
+Params ibCommonParams(IbCommon& p);  // commonParams, then delta and ibK2
+void ibSettings(Analysis& an, const IbCommon& p);
 
 // the polygon round the solid: the points of the boundaries, in order
 Polygon solidPolygon(const std::vector<Boundary>& boundaries);

@@ -25,30 +25,39 @@
 //          last step; history.csv: lstp, gamma, mean and reference sigma_xy, error
 // Tests:   tests/test_ample.cpp (against closed forms written in the test)
 //--------------------------------------------------------------------------
-#include "ample/elemMPinfo.h"
-#include "ample/meshes/formCoord2D.h"
+#include "ample/cpdi/elemMPinfoCPDI.h"
+#include "formCoord2D.h"
 #include "homogeneous.h"
 #include "setupHelpers.h"
 #include <cmath>
 
 namespace ample::shear {
 
-Params params() {
-  Params P = commonParams(30);
-  setDefault(P, "mp", 3);
-  setDefault(P, "E", 10e3);
-  setDefault(P, "nu", 0.3);
-  setDefault(P, "rhoY", 5e3);
-  P.push_back(Param("nels", 8).integer(1, 256).help("cells across the unit square: h = 1 m / nels"));
-  P.push_back(Param("dl", 6).range(0, 50).help("shear displacement of the top (m)"));
-  setDefault(P, "domainUpdate", 5);  // FiiVol (eq 38): unchanged domains under simple shear
-  for (Param& p : P)
-    if (p.name == "domainUpdate")
-      p.help("GIMP domain update ([Lagrangian] eqs 32-39); shear default FiiVol (eq 38); Uii (eq 34, "
-             "the default of the other setups) is the paper's failing case: error 0.86, stops in step 27");
-  P.push_back(Param("prescribe", 1).choice(1, {"boundary", "all"})
-                  .help("nodes given the shear: of the cells linked to the outer layer of points (the paper's, "
-                        "interior nodes solved for), or of all active cells (nothing solved: tests the model only)"));
+// the parameters and their defaults (their ranges and help: params)
+struct Shear : Common {
+  int nels = 8;
+  double dl = 6;
+  int prescribe = 1;                           // 1 boundary, 2 all
+  Shear() {
+    lstps = 30;
+    mp = 3;
+    E = 10e3;
+    nu = 0.3;
+    rhoY = 5e3;
+    domainUpdate = DomainUpdate::FiiVol;       // eq 38: unchanged domains under simple shear
+  }
+};
+
+Params params(Shear& p) {
+  Params P = commonParams(p);
+  param(P, "nels", p.nels).integer(1, 256).help("cells across the unit square: h = 1 m / nels");
+  param(P, "dl", p.dl).range(0, 50).help("shear displacement of the top (m)");
+  P.named("domainUpdate")
+      .help("GIMP domain update ([Lagrangian] eqs 32-39); shear default FiiVol (eq 38); Uii (eq 34, "
+            "the default of the other setups) is the paper's failing case: error 0.86, stops in step 27");
+  param(P, "prescribe", p.prescribe).choice(1, {"boundary", "all"})
+      .help("nodes given the shear: of the cells linked to the outer layer of points (the paper's, "
+            "interior nodes solved for), or of all active cells (nothing solved: tests the model only)");
   return P;
 }
 
@@ -67,21 +76,21 @@ static double maxError(const Analysis& an, const Vector6d& ref) {
   return err;
 }
 
-Analysis setupGrid(const Params& P) {
-  const int nels = int(get(P, "nels"));
-  const double dl = get(P, "dl"), dg = dl / get(P, "lstps");   // shear per step
+Analysis setupGrid(const Shear& p) {
+  const int nels = p.nels;
+  const double dl = p.dl, dg = dl / p.lstps;                    // shear per step
   const int nx = nels * (int(std::ceil(dl)) + 2);               // room for the top to move
-  Analysis an = baseAnalysis(P);
+  Analysis an = baseAnalysis(p);
   an.mesh = formCoord2D(nx, nels, double(nx) / nels, 1.0);
-  fillBlock(an.mpData, Vector2d::Zero(), nels, nels, an.mesh.h, P, 0.0);
-  const double edge = 1.0 / (nels * get(P, "mp"));              // the outer layer of points
-  for (int p = 0; p < int(an.mpData.size()); ++p) {
-    const Vector2d X = an.mpData[p].X0;
-    if (X.minCoeff() < edge || X.maxCoeff() > 1.0 - edge || get(P, "prescribe") == 2)
-      an.tagged.push_back(p);
+  fillBlock(an.mpData, Vector2d::Zero(), nels, nels, an.mesh.h, p, 0.0);
+  const double edge = 1.0 / (nels * p.mp);                      // the outer layer of points
+  for (int i = 0; i < int(an.mpData.size()); ++i) {
+    const Vector2d X = an.mpData[i].X0;
+    if (X.minCoeff() < edge || X.maxCoeff() > 1.0 - edge || p.prescribe == 2)
+      an.tagged.push_back(i);
   }
   an.beforeStep = [dg](Analysis& a, int) {                      // shear the boundary cells
-    elemMPinfo(a.mesh, a.mpData);
+    elemMPinfoCPDI(a.mesh, a.mpData);
     std::vector<char> fixed(a.mesh.nodes(), 0);
     for (int p : a.tagged)
       for (int e = 0; e < a.mpData[p].ne; ++e)
@@ -100,10 +109,13 @@ Analysis setupGrid(const Params& P) {
   return an;
 }
 
-Results results(const Analysis& an, const Params&) {
+Results results(const Analysis& an, const Shear&) {
   if (an.history.empty()) return {};
   return {{"error", an.history.back().back().second}, {"sxy", an.history.back()[2].second},
           {"sxy_reference", an.history.back()[3].second}};
 }
+
+// this setup's line in the table of setups/setups.cpp
+SetupCalls calls() { return {params, setupGrid, results}; }
 
 }  // namespace ample::shear

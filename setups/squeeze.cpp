@@ -16,41 +16,49 @@
 // Outputs: Analysis · results · history.csv: lstp, v_top, force, force_a
 // Tests:   tests/test_setups.cpp, CTest setup.squeeze (docs/new-setup.md)
 //--------------------------------------------------------------------------
-#include "ample/meshes/formCoord2D.h"
+#include "formCoord2D.h"
 #include "setupHelpers.h"
 #include <algorithm>
 #include <cmath>
 
 namespace ample::squeeze {
 
-// plane strain, sigma_xx = 0: sigma_yy = C eps_yy with C = E / (1 - nu^2)
-static double stiffness(const Params& P) { return get(P, "E") / (1 - get(P, "nu") * get(P, "nu")); }
+// the parameters and their defaults (their ranges and help: params)
+struct Squeeze : Common {
+  int nels = 4, margin = 1;
+  double squash = 0.05;
+  Squeeze() {
+    formulation = Formulation::SS;  // the analytic solution is exact for the grid
+    E = 10e6;
+    nu = 0.3;
+  }
+};
 
-Params params() {
-  Params P = commonParams(1);
-  setDefault(P, "formulation", 3);  // SS: the analytic solution is exact for the grid
-  setDefault(P, "E", 10e6);
-  setDefault(P, "nu", 0.3);
-  P.push_back(Param("nels", 4).integer(1, 1024).help("cells over the block height: h = 1 m / nels"));
-  P.push_back(Param("margin", 1).integer(1, 64).help("grid cells past the right side"));
-  P.push_back(Param("squash", 0.05).range(0, 0.5).help("top displacement / H at the last step"));
+Params params(Squeeze& p) {
+  Params P = commonParams(p);
+  param(P, "nels", p.nels).integer(1, 1024).help("cells over the block height: h = 1 m / nels");
+  param(P, "margin", p.margin).integer(1, 64).help("grid cells past the right side");
+  param(P, "squash", p.squash).range(0, 0.5).help("top displacement / H at the last step");
   return P;
 }
 
-Analysis setupGrid(const Params& P) {
+// plane strain, sigma_xx = 0: sigma_yy = C eps_yy with C = E / (1 - nu^2)
+static double stiffness(const Squeeze& p) { return p.E / (1 - p.nu * p.nu); }
+
+Analysis setupGrid(const Squeeze& p) {
   const double W = 1, H = 1;
-  const int nels = int(get(P, "nels")), margin = int(get(P, "margin"));
+  const int nels = p.nels, margin = p.margin;
   const double h = H / nels;                                     // square cells
-  Analysis an = baseAnalysis(P);
+  Analysis an = baseAnalysis(p);
   an.mesh = formCoord2D(nels + margin, nels, (nels + margin) * h, H);
   if (margin < 64) an.widerGrid = "margin=" + std::to_string(std::min(64, 2 * margin));
-  const double eps = 1e-9 * h, dv = -get(P, "squash") * H / an.lstps;
+  const double eps = 1e-9 * h, dv = -p.squash * H / an.lstps;
   fixDofs(an.mesh, 0, [&](double X, double) { return X < eps; });      // left: symmetry
   fixDofs(an.mesh, 1, [&](double, double Y) { return Y < eps; });      // base: rollers
   fixDofs(an.mesh, 1, [&](double, double Y) { return Y > H - eps; }, dv);  // top: pushed
-  fillBlock(an.mpData, Vector2d::Zero(), nels, nels, an.mesh.h, P, 1.0);
-  const double C = stiffness(P), top = nels * (nels + margin + 1);  // first node of the top row
-  const double squash = get(P, "squash");
+  fillBlock(an.mpData, Vector2d::Zero(), nels, nels, an.mesh.h, p, 1.0);
+  const double C = stiffness(p), top = nels * (nels + margin + 1);  // first node of the top row
+  const double squash = p.squash;
   an.afterStep = [=](Analysis& a, int lstp, double lf) {         // the force on the top
     double force = 0;
     for (int n = 0; n <= nels + margin; ++n) force += a.frct(dof(top + n, 1));
@@ -61,9 +69,9 @@ Analysis setupGrid(const Params& P) {
   return an;
 }
 
-Results results(const Analysis& an, const Params& P) {
-  const double nu = get(P, "nu"), eYY = -get(P, "squash"), eXX = -nu * eYY / (1 - nu);
-  const double sA = stiffness(P) * eYY;                          // sigma_yy,a
+Results results(const Analysis& an, const Squeeze& p) {
+  const double nu = p.nu, eYY = -p.squash, eXX = -nu * eYY / (1 - nu);
+  const double sA = stiffness(p) * eYY;                          // sigma_yy,a
   const int n = an.lstps;  // SS moves the points: each step's strain acts on the moved body
   const double gX = std::pow(1 + eXX / n, n) - 1, gY = std::pow(1 + eYY / n, n) - 1;
   double err = 0;                                                // stress, then displacement
@@ -81,5 +89,8 @@ Results results(const Analysis& an, const Params& P) {
     r.insert(r.end(), {{"force", an.history.back()[2].second}, {"force_a", an.history.back()[3].second}});
   return r;
 }
+
+// this setup's line in the table of setups/setups.cpp
+SetupCalls calls() { return {params, setupGrid, results}; }
 
 }  // namespace ample::squeeze

@@ -15,20 +15,28 @@
 //          history.csv: lstp, reaction, reference
 // Tests:   tests/test_ample.cpp (against closed forms written in the test)
 //--------------------------------------------------------------------------
-#include "ample/meshes/formCoord2D.h"
+#include "formCoord2D.h"
 #include "homogeneous.h"
 #include "setupHelpers.h"
 #include <cmath>
 
 namespace ample::stretch {
 
-Params params() {
-  Params P = commonParams(20);
-  setDefault(P, "cmType", 2);
-  setDefault(P, "E", 1000);
-  setDefault(P, "nu", 0.0);
-  setDefault(P, "rhoY", 400);
-  P.push_back(Param("du", 0.2).range(0, 10).help("displacement of the right side per step"));
+// the parameters and their defaults (their ranges and help: params)
+struct Stretch : Common {
+  double du = 0.2;
+  Stretch() {
+    lstps = 20;
+    cmType = CmType::VonMises;
+    E = 1000;
+    nu = 0.0;
+    rhoY = 400;
+  }
+};
+
+Params params(Stretch& p) {
+  Params P = commonParams(p);
+  param(P, "du", p.du).range(0, 10).help("displacement of the right side per step");
   return P;
 }
 
@@ -58,11 +66,11 @@ static void grid(Analysis& an, double L, double L0) {  // grid over the current 
   fixDofs(an.mesh, 1, [&](double, double Y) { return Y < eps; });
 }
 
-Analysis setupGrid(const Params& P) {
-  const double L0 = 2.0, du = get(P, "du");
-  Analysis an = baseAnalysis(P);
+Analysis setupGrid(const Stretch& p) {
+  const double L0 = 2.0, du = p.du;
+  Analysis an = baseAnalysis(p);
   grid(an, L0, L0);
-  fillBlock(an.mpData, Vector2d::Zero(), 2, 2, an.mesh.h, P, 0.0);
+  fillBlock(an.mpData, Vector2d::Zero(), 2, 2, an.mesh.h, p, 0.0);
   an.gridMoves = true;                                          // mesh_<lstp>.vtk each step
   an.beforeStep = [=](Analysis& a, int lstp) {
     grid(a, L0 + (lstp - 1) * du, L0);
@@ -79,7 +87,7 @@ Analysis setupGrid(const Params& P) {
   return an;
 }
 
-Results results(const Analysis& an, const Params&) {
+Results results(const Analysis& an, const Stretch&) {
   if (an.history.empty()) return {};
   double diff = 0.0, refMax = 0.0;
   for (const auto& row : an.history) {
@@ -94,5 +102,8 @@ Results results(const Analysis& an, const Params&) {
   }
   return r;
 }
+
+// this setup's line in the table of setups/setups.cpp
+SetupCalls calls() { return {params, setupGrid, results}; }
 
 }  // namespace ample::stretch

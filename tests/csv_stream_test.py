@@ -2,7 +2,7 @@
 """csv_stream_test.py — steps.csv, residuals.csv and history.csv grow with the run (CTest output.stream)
 
 ample appends each completed load step's rows to the three files at the step's end and flushes
-them (plotting/writeOutput.h, appendStepFiles), so a run that is killed keeps every completed
+them (setups/program/writeOutput.h, appendStepFiles), so a run that is killed keeps every completed
 step. Checked here on runs with a history.csv, one thread each:
   1. killed: a simple shear (32 x 32 cells, 20 steps, about 0.1 s a step) is started, SIGKILLed as soon as steps.csv holds KILL_AFTER converged steps
      (k of the run's LSTPS); then every line of the three files is whole (ends with a newline,

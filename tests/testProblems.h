@@ -1,10 +1,10 @@
 // testProblems.h — small problems built in code for the tests (not a test file itself)
 #pragma once
-#include "ample/program/run.h"
+#include "setups/program/run.h"
 #include "ample/detMPs.h"
 #include "ample/formulations/detMPsForm.h"
 #include "ample/elemMPinfo.h"
-#include "ample/meshes/formCoord2D.h"
+#include "setups/formCoord2D.h"
 #include "setups/setupHelpers.h"
 #include "setups/setups.h"
 #include <doctest/doctest.h>
@@ -43,7 +43,7 @@ inline Analysis runSetup(const std::string& name,
   const Setup* s = findSetup(name);
   REQUIRE(s != nullptr);
   Params P = s->params();
-  for (const auto& kv : set) setDefault(P, kv.first, kv.second);
+  for (const auto& kv : set) setParam(P, kv.first, kv.second);
   Analysis an = s->setupGrid(P);
   solveRun(an, log);
   return an;
@@ -51,16 +51,16 @@ inline Analysis runSetup(const std::string& name,
 
 // a 4 x 4 grid of 1 m cells with an mp x mp block of points filling cells [1,3) x [1,3)
 inline Analysis smallBlock(MpType mpType, CmType cmType, int mp = 2) {
-  Params P = commonParams(1);
-  setDefault(P, "mp", mp);
-  setDefault(P, "mpType", int(mpType));
-  setDefault(P, "cmType", int(cmType));
-  setDefault(P, "E", 1e6);
-  setDefault(P, "nu", 0.3);
-  setDefault(P, "rhoY", 2e3);
+  Common p;
+  p.mp = mp;
+  p.mpType = mpType;
+  p.cmType = cmType;
+  p.E = 1e6;
+  p.nu = 0.3;
+  p.rhoY = 2e3;
   Analysis an;
   an.mesh = formCoord2D(4, 4, 4.0, 4.0);
-  fillBlock(an.mpData, Vector2d(1, 1), 2, 2, an.mesh.h, P, 1000.0);
+  fillBlock(an.mpData, Vector2d(1, 1), 2, 2, an.mesh.h, p, 1000.0);
   return an;
 }
 

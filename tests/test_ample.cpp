@@ -1,7 +1,7 @@
 // Tests of the main loop (ample.cpp) on the paper's problems: Newton-Raphson
 // convergence order, compaction convergence with refinement, collapse extents
 // of [AMPLE] table 5, and a patch test through the whole loop.
-#include "ample/program/run.h"
+#include "setups/program/run.h"
 #include "testProblems.h"
 #include <doctest/doctest.h>
 #include <algorithm>
@@ -17,7 +17,7 @@ double result(const std::string& name, const Analysis& an,
               const std::vector<std::pair<std::string, double>>& set, const std::string& key) {
   const Setup* s = findSetup(name);
   Params P = s->params();
-  for (const auto& kv : set) setDefault(P, kv.first, kv.second);
+  for (const auto& kv : set) setParam(P, kv.first, kv.second);
   for (const auto& r : s->results(an, P))
     if (r.first == key) return r.second;
   FAIL("no result " << key);
@@ -263,7 +263,7 @@ TEST_SUITE("ample") {
   TEST_CASE("ample: collapse 6x6 at h = 1 m reproduces the load step 10 residuals of [Lagrangian] table 8") {
     const Setup* s = findSetup("collapse");
     Params P = s->params();
-    setDefault(P, "mp", 6);
+    setParam(P, "mp", 6);
     Analysis an = s->setupGrid(P);
     RunLog log;
     solveRun(an, log, RunOptions{"", 0, true, 10});
@@ -342,7 +342,7 @@ TEST_SUITE("ample") {
       solve(plain);                                                  // Hooks(): the core's
       RunLog log, fastLog;
       RunOptions coreLoops{"", 0, true, 0};
-      coreLoops.basisLoop = elemMPinfo, coreLoops.pointLoop = detMPs;
+      coreLoops.basisLoop = nullptr, coreLoops.pointLoop = detMPs;   // nullptr: the serial elemMPinfo
       solveRun(full, log, coreLoops);
       solveRun(fast, fastLog);                                       // detMPsFast in an optimised build
       REQUIRE(plain.mpData.size() == full.mpData.size());
@@ -365,7 +365,7 @@ TEST_SUITE("ample") {
   TEST_CASE("solve: a load step that does not converge throws NewtonFailure naming the step and fErr (core, no hooks)") {
     const Setup* s = findSetup("collapse");
     Params P = s->params();
-    setDefault(P, "NRitMax", 3);                                     // too few passes for the plastic steps
+    setParam(P, "NRitMax", 3);                                     // too few passes for the plastic steps
     Analysis an = s->setupGrid(P);
     std::string what;
     try {
@@ -382,15 +382,22 @@ TEST_SUITE("ample") {
   TEST_CASE("solve: each hook is called in its phase, in fig 4's order, once per pass or step") {
     const Setup* s = findSetup("compaction");
     Analysis an = s->setupGrid(s->params());
+    struct Recorder : Hooks {                                        // each hook marks its call
+      std::string& calls;
+      long& passes;
+      Recorder(std::string& c, long& p) : calls(c), passes(p) {}
+      void startStep(Analysis&, const Increment& inc) const override { calls += "S" + std::to_string(inc.lstp); }
+      void stepTerms(Analysis&, const Increment&, Eigen::VectorXd&) const override { calls += "t"; }
+      void passTerms(const Eigen::VectorXd&, DetMPsOut&, Eigen::VectorXd&) const override { calls += "p"; }
+      void afterPass(const Analysis&, const Increment&, int NRit, double) const override {
+        calls += std::to_string(NRit), passes++;
+      }
+      void afterUpdate(Analysis&, const Increment&, int, double) const override { calls += "u"; }
+      void endStep(Analysis&, const Increment&) const override { calls += "E"; }
+    };
     std::string calls;
     long passes = 0;
-    Hooks h;
-    h.startStep = [&](Analysis&, const Increment& inc) { calls += "S" + std::to_string(inc.lstp); };
-    h.stepTerms = [&](Analysis&, const Increment&, Eigen::VectorXd&) { calls += "t"; };
-    h.passTerms = [&](const Eigen::VectorXd&, DetMPsOut&, Eigen::VectorXd&) { calls += "p"; };
-    h.afterPass = [&](const Analysis&, const Increment&, int NRit, double) { calls += std::to_string(NRit), passes++; };
-    h.afterUpdate = [&](Analysis&, const Increment&, int, double) { calls += "u"; };
-    h.endStep = [&](Analysis&, const Increment&) { calls += "E"; };
+    const Recorder h(calls, passes);
     solve(an, h);
     // S1 t (p pass)... u E S2 t (p pass)... u E: passes 0, 1, ... of each step in turn
     CHECK(calls.substr(0, 7) == "S1tp0p1");

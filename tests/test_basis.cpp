@@ -6,7 +6,7 @@
 #include "ample/basis/SvpGIMP.h"
 #include "ample/basis/SvpMPM.h"
 #include "ample/elemMPinfo.h"
-#include "ample/meshes/formCoord2D.h"
+#include "setups/formCoord2D.h"
 #include <doctest/doctest.h>
 #include <algorithm>
 #include <cmath>

@@ -1,6 +1,6 @@
 // Tests of the command line (cli.cpp, main.cpp): parameters parsed and
 // checked, bad input refused with exit status 2 and no output written.
-#include "ample/program/cli.h"
+#include "setups/program/cli.h"
 #include "ample/errors.h"
 #include "setups/setups.h"
 #include <doctest/doctest.h>
@@ -77,9 +77,9 @@ const Param* paramOf(const Params& P, const std::string& name) {
 bool parsedValuesValid(const CliRequest& r, const std::vector<std::string>& args) {
   bool ok = true;
   for (const Param& p : r.params) {
-    if (inside(p, p.value)) continue;
+    if (inside(p, p.value())) continue;
     ok = false;
-    MESSAGE("parameter " << p.name << " = " << p.value << " outside " << rangeOf(p));
+    MESSAGE("parameter " << p.name << " = " << p.value() << " outside " << rangeOf(p));
   }
   std::map<std::string, std::string> last;
   std::string vtk = "1";
@@ -98,7 +98,7 @@ bool parsedValuesValid(const CliRequest& r, const std::vector<std::string>& args
     double v = std::strtod(kv.second.c_str(), nullptr);
     for (size_t k = 0; k < p->names.size(); ++k)
       if (sameName(kv.second, p->names[k])) v = p->lo + double(k);
-    if (p->value != v) { MESSAGE(kv.first << " = " << kv.second << " kept as " << p->value); ok = false; }
+    if (p->value() != v) { MESSAGE(kv.first << " = " << kv.second << " kept as " << p->value()); ok = false; }
   }
   if (r.options.vtkEvery != std::strtod(vtk.c_str(), nullptr)) ok = false;
   return ok;
@@ -138,18 +138,18 @@ TEST_SUITE("cli") {
     const CliRequest r = parseArgs({"compaction", "nelsy=8", "E=2e4", "--vtk", "5", "--quiet",
                                     "--out", "x/y"});
     REQUIRE(r.mode == CliMode::Run);
-    CHECK(get(r.params, "nelsy") == 8);
-    CHECK(get(r.params, "E") == 2e4);
-    CHECK(get(r.params, "nu") == 0.0);  // untouched default
+    CHECK(r.params.named("nelsy").value() == 8);
+    CHECK(r.params.named("E").value() == 2e4);
+    CHECK(r.params.named("nu").value() == 0.0);  // untouched default
     CHECK(r.options.vtkEvery == 5);
     CHECK(r.options.quiet);
     CHECK(r.options.outDir == "x/y");
     CHECK(parseArgs({"beam"}).options.outDir == "output/beam");
     const CliRequest n = parseArgs({"collapse", "mpType=CPDI2", "formulation=PC", "domainUpdate=corner"});
-    CHECK(get(n.params, "mpType") == 4);  // values may be given by name
-    CHECK(get(n.params, "formulation") == 2);
-    CHECK(get(n.params, "domainUpdate") == 4);
-    CHECK(get(parseArgs({"compaction", "formulation=SS"}).params, "formulation") == 3);  // [Boundaries]
+    CHECK(n.params.named("mpType").value() == 4);  // values may be given by name
+    CHECK(n.params.named("formulation").value() == 2);
+    CHECK(n.params.named("domainUpdate").value() == 4);
+    CHECK(parseArgs({"compaction", "formulation=SS"}).params.named("formulation").value() == 3);  // [Boundaries]
   }
 
   TEST_CASE("cli: bad input is refused with a message naming the parameter and range") {
@@ -289,7 +289,7 @@ TEST_SUITE("cli") {
                                                  {"1E3", 1e3}, {"20000", 2e4}, {"2.5e-3", 2.5e-3}};
     for (const auto& kv : plain) {
       CAPTURE(kv.first);
-      CHECK(get(parseArgs({"compaction", "E=" + kv.first}).params, "E") == kv.second);
+      CHECK(parseArgs({"compaction", "E=" + kv.first}).params.named("E").value() == kv.second);
     }
   }
 
@@ -303,8 +303,8 @@ TEST_SUITE("cli") {
       CHECK(has(m, "is not a whole number"));
       CHECK(has(m, rangeText(*paramOf(P, name))));  // e.g. "integer in [1, 1e+06]"
     }
-    CHECK(get(parseArgs({"compaction", "lstps=10"}).params, "lstps") == 10);
-    CHECK(get(parseArgs({"compaction", "nelsy=+8"}).params, "nelsy") == 8);
+    CHECK(parseArgs({"compaction", "lstps=10"}).params.named("lstps").value() == 10);
+    CHECK(parseArgs({"compaction", "nelsy=+8"}).params.named("nelsy").value() == 8);
   }
 
   TEST_CASE("cli: a parameter or an option given twice is refused, naming it") {
@@ -348,14 +348,42 @@ TEST_SUITE("cli") {
     CHECK(runBinary("--help extra") == 2);
   }
 
+  TEST_CASE("cli: each parameter of every setup sets a member of its own, and a fresh table has the defaults") {
+    for (const Setup& s : setupsTable()) {
+      const std::string setup = s.name;
+      CAPTURE(setup);
+      Params P = s.params();
+      std::vector<double> before;
+      for (const Param& p : P) before.push_back(p.value());
+      for (size_t k = 0; k < P.size(); ++k) {
+        const Param& p = P[k];
+        CAPTURE(p.name);
+        if (p.lo == p.hi) continue;  // one value allowed (e.g. lstps of the one-step setups)
+        const double d = before[k];  // another valid value: one step (whole) or half way to a bound
+        const double v = p.isInteger ? (d + 1 <= p.hi ? d + 1 : d - 1)
+                                     : d < p.hi && std::isfinite(p.hi) ? 0.5 * (d + p.hi)
+                                                                       : 0.5 * (d + p.lo);
+        REQUIRE(inside(p, v));
+        REQUIRE(v != d);
+        p.set(v);
+        CHECK(p.value() == v);
+        for (size_t j = 0; j < P.size(); ++j)
+          if (j != k && P[j].value() != before[j]) FAIL_CHECK(P[j].name << " moved with " << p.name);
+        p.set(d);
+      }
+      const Params fresh = s.params();
+      for (size_t k = 0; k < P.size(); ++k) CHECK(fresh[k].value() == before[k]);
+    }
+  }
+
   TEST_CASE("cli: a choice's name is read in any case, an unknown one lists the names and numbers") {
     for (const std::string name : {"gimp", "GIMP", "Gimp", "gImP"}) {
       CAPTURE(name);
-      CHECK(get(parseArgs({"compaction", "mpType=" + name}).params, "mpType") == 2);
+      CHECK(parseArgs({"compaction", "mpType=" + name}).params.named("mpType").value() == 2);
     }
-    CHECK(get(parseArgs({"compaction", "domainUpdate=CORNER"}).params, "domainUpdate") == 4);
-    CHECK(get(parseArgs({"compaction", "solver=ldlt"}).params, "solver") == 1);
-    CHECK(get(parseArgs({"compaction", "formulation=pc"}).params, "formulation") == 2);
+    CHECK(parseArgs({"compaction", "domainUpdate=CORNER"}).params.named("domainUpdate").value() == 4);
+    CHECK(parseArgs({"compaction", "solver=ldlt"}).params.named("solver").value() == 1);
+    CHECK(parseArgs({"compaction", "formulation=pc"}).params.named("formulation").value() == 2);
     CHECK(has(refusalOf({"compaction", "mpType=foo"}),
               "parameter 'mpType' = 'foo': allowed 1 MPM, 2 GIMP, 3 CPDI1, 4 CPDI2"));
     CHECK(has(refusalOf({"compaction", "cmType=vonmises"}), "parameter 'cmType' = 'vonmises': allowed 1 elastic, 2 VM"));
@@ -363,9 +391,9 @@ TEST_SUITE("cli") {
 
   TEST_CASE("cli: any finite double is accepted, subnormals too, only overflow is not finite") {
     // strtod sets ERANGE on a subnormal result as on overflow; only the latter is bad input
-    CHECK(get(parseArgs({"compaction", "E=1e-320"}).params, "E") == std::strtod("1e-320", nullptr));
-    CHECK(get(parseArgs({"compaction", "E=4.9e-324"}).params, "E") > 0);  // the least subnormal
-    CHECK(get(parseArgs({"compaction", "E=1.7e308"}).params, "E") == 1.7e308);
+    CHECK(parseArgs({"compaction", "E=1e-320"}).params.named("E").value() == std::strtod("1e-320", nullptr));
+    CHECK(parseArgs({"compaction", "E=4.9e-324"}).params.named("E").value() > 0);  // the least subnormal
+    CHECK(parseArgs({"compaction", "E=1.7e308"}).params.named("E").value() == 1.7e308);
     for (const std::string text : {"1e400", "-1e309", "2e308"}) {
       CAPTURE(text);
       const std::string m = refusalOf({"compaction", "E=" + text});

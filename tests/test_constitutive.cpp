@@ -10,8 +10,8 @@ using namespace ample;
 using Matrix3d = Eigen::Matrix3d;
 
 namespace {
-const Vector3d mCst(1e6, 0.3, 2e4);  // E, nu, rho_y
-const double E = mCst(0), nu = mCst(1), rhoY = mCst(2);
+const MaterialConstants mCst{1e6, 0.3, 2e4};  // E, nu, rho_y
+const double E = mCst.E, nu = mCst.nu, rhoY = mCst.rhoY;
 const double lam = E * nu / ((1 + nu) * (1 - 2 * nu)), G = E / (2 * (1 + nu));
 const double K = lam + 2 * G / 3;  // bulk modulus
 
@@ -165,7 +165,7 @@ TEST_SUITE("VMconst") {
 // static, fails), rotate the strain (isotropy), and check sums and limits by hand.
 TEST_SUITE("Hooke3d") {
   // [E, nu, rho_y]: a soft, nearly compressible one and a stiff, nearly incompressible one
-  const Vector3d matA(2e5, 0.2, 1e3), matB(7e7, 0.45, 3e5);
+  const MaterialConstants matA{2e5, 0.2, 1e3}, matB{7e7, 0.45, 3e5};
 
   // a strain 6-vector (engineering shears) as a tensor and a stress tensor as a 6-vector
   Matrix3d strainTensor(const Vector6d& e) {
@@ -199,15 +199,15 @@ TEST_SUITE("Hooke3d") {
   TEST_CASE("Hooke3d: two materials in turn / each its own D and stress by hand / none kept from an earlier call") {
     const Vector6d eps = generalStrain();
     // the default material first, then A, B and A again: each answer only from its own E, nu
-    for (const Vector3d& m : {mCst, matA, matB, matA, mCst, matB}) {
-      CAPTURE(m(0));
-      CAPTURE(m(1));
-      const Matrix6d Dh = isoD(m(0), m(1));
-      CHECK((elasticStiffness(m(0), m(1)) - Dh).norm() <= 1e-12 * Dh.norm());
+    for (const MaterialConstants& m : {mCst, matA, matB, matA, mCst, matB}) {
+      CAPTURE(m.E);
+      CAPTURE(m.nu);
+      const Matrix6d Dh = isoD(m.E, m.nu);
+      CHECK((elasticStiffness(m.E, m.nu) - Dh).norm() <= 1e-12 * Dh.norm());
       const ConstOut o = Hooke3d(eps, m);
       CHECK((o.D - Dh).norm() <= 1e-12 * Dh.norm());
       // tau = lambda tr(eps) 1 + 2G eps (tensor shears), written out
-      const double l = m(0) * m(1) / ((1 + m(1)) * (1 - 2 * m(1))), g = m(0) / (2 * (1 + m(1)));
+      const double l = m.E * m.nu / ((1 + m.nu) * (1 - 2 * m.nu)), g = m.E / (2 * (1 + m.nu));
       const double tr = eps(0) + eps(1) + eps(2);
       Vector6d tau;
       tau << l * tr + 2 * g * eps(0), l * tr + 2 * g * eps(1), l * tr + 2 * g * eps(2), g * eps(3), g * eps(4),
@@ -217,7 +217,7 @@ TEST_SUITE("Hooke3d") {
     }
   }
   TEST_CASE("Hooke3d: isotropic: the stress of a rotated strain is the rotated stress (two materials and two rotations)") {
-    for (const Vector3d& m : {matB, matA})
+    for (const MaterialConstants& m : {matB, matA})
       for (const Matrix3d& Q : {rotation3(0.3, -0.7, 1.1), rotation3(-1.2, 0.4, 0.25)}) {
         const Vector6d eps = generalStrain();
         const Matrix3d tau = stressTensor(Hooke3d(eps, m).Ksig);
@@ -230,15 +230,15 @@ TEST_SUITE("Hooke3d") {
     const Vector6d e1 = generalStrain();
     Vector6d e2;
     e2 << -4e-4, 1e-3, 2e-3, -6e-4, 2e-4, 1e-3;
-    for (const Vector3d& m : {matA, matB}) {
-      const double l = m(0) * m(1) / ((1 + m(1)) * (1 - 2 * m(1))), g = m(0) / (2 * (1 + m(1)));
+    for (const MaterialConstants& m : {matA, matB}) {
+      const double l = m.E * m.nu / ((1 + m.nu) * (1 - 2 * m.nu)), g = m.E / (2 * (1 + m.nu));
       const Matrix3d t = strainTensor(e1);
       const double W = l * t.trace() * t.trace() + 2 * g * (t.array() * t.array()).sum();
       const ConstOut o = Hooke3d(e1, m);
       CHECK(e1.dot(o.Ksig) == doctest::Approx(W).epsilon(1e-12));
       CHECK(W > 0.0);
-      Vector3d other = m;
-      other(2) *= 7.0;  // another yield stress: an elastic law ignores it
+      MaterialConstants other = m;
+      other.rhoY *= 7.0;  // another yield stress: an elastic law ignores it
       CHECK((Hooke3d(e1, other).Ksig - o.Ksig).norm() <= 1e-14 * o.Ksig.norm());
       const Vector6d s = Hooke3d(2.5 * e1 - 1.5 * e2, m).Ksig;
       CHECK((s - (2.5 * o.Ksig - 1.5 * Hooke3d(e2, m).Ksig)).norm() <= 1e-12 * s.norm());
@@ -253,16 +253,16 @@ TEST_SUITE("Hooke3d") {
 
 TEST_SUITE("VMconst") {
   // [E, nu, rho_y] of two more materials: a weak and a strong one
-  const Vector3d weak(2e5, 0.2, 1e3), strong(7e7, 0.45, 3e6);
+  const MaterialConstants weak{2e5, 0.2, 1e3}, strong{7e7, 0.45, 3e6};
   struct Moduli {
     double K, G;
   };
-  Moduli moduliOf(const Vector3d& m) {
-    return {m(0) / (3 * (1 - 2 * m(1))), m(0) / (2 * (1 + m(1)))};
+  Moduli moduliOf(const MaterialConstants& m) {
+    return {m.E / (3 * (1 - 2 * m.nu)), m.E / (2 * (1 + m.nu))};
   }
   // the trial rho of plasticStrain() for a material, by hand: 2G |e|, |e|^2 = 0.0146625
-  double rhoTrialOf(const Vector3d& m) { return 2 * moduliOf(m).G * std::sqrt(0.0146625); }
-  Matrix6d fdTangent(const Vector6d& eps, const Vector3d& m) {
+  double rhoTrialOf(const MaterialConstants& m) { return 2 * moduliOf(m).G * std::sqrt(0.0146625); }
+  Matrix6d fdTangent(const Vector6d& eps, const MaterialConstants& m) {
     Matrix6d Dfd;
     const double d = 1e-7 * std::max(1.0, eps.norm() * 10);
     for (int c = 0; c < 6; ++c) {
@@ -282,13 +282,13 @@ TEST_SUITE("VMconst") {
 
   TEST_CASE("VMconst: three materials in turn: each returns to its own surface with its own K and G and theta (by hand)") {
     const Vector6d eps = plasticStrain();
-    for (const Vector3d& m : {weak, mCst, strong, weak}) {
-      CAPTURE(m(0));
+    for (const MaterialConstants& m : {weak, mCst, strong, weak}) {
+      CAPTURE(m.E);
       const Moduli M = moduliOf(m);
-      const double rhoTr = rhoTrialOf(m), theta = m(2) / rhoTr;
+      const double rhoTr = rhoTrialOf(m), theta = m.rhoY / rhoTr;
       REQUIRE(theta < 1.0);  // every one plastic at this strain
       const ConstOut o = VMconst(eps, m);
-      CHECK(std::abs(rhoOf(o.Ksig) - m(2)) <= 1e-10 * m(2));
+      CHECK(std::abs(rhoOf(o.Ksig) - m.rhoY) <= 1e-10 * m.rhoY);
       CHECK(meanOf(o.Ksig) == doctest::Approx(3 * M.K * 0.02).epsilon(1e-12));  // p = K tr(eps)
       const Vector6d eVol = 0.02 * m1();
       CHECK((o.epsE - (eVol + theta * (eps - eVol))).norm() <= 1e-12 * eps.norm());
@@ -318,8 +318,8 @@ TEST_SUITE("VMconst") {
     eps << 1e-2, -2e-2, 5e-3, 1e-2, -4e-3, 7e-3;  // |e_dev| = 0.0245: rho_tr 1.2e6 and 4.1e3 Pa
     const ConstOut s = VMconst(eps, strong), w = VMconst(eps, weak), s2 = VMconst(eps, strong);
     const Moduli S = moduliOf(strong);
-    REQUIRE(rhoOf(Hooke3d(eps, strong).Ksig) < strong(2));
-    REQUIRE(rhoOf(Hooke3d(eps, weak).Ksig) > weak(2));
+    REQUIRE(rhoOf(Hooke3d(eps, strong).Ksig) < strong.rhoY);
+    REQUIRE(rhoOf(Hooke3d(eps, weak).Ksig) > weak.rhoY);
     CHECK(s.epsE == eps);
     const double l = S.K - 2 * S.G / 3, tr = eps.head<3>().sum();
     Vector6d tau;  // elastic by hand
@@ -328,28 +328,28 @@ TEST_SUITE("VMconst") {
     CHECK((s.Ksig - tau).norm() <= 1e-12 * tau.norm());
     CHECK(std::abs(s.D(3, 3) - S.G) <= 1e-12 * S.G);      // the elastic tangent
     CHECK(std::abs(s.D(0, 1) - l) <= 1e-12 * l);
-    CHECK(std::abs(rhoOf(w.Ksig) - weak(2)) <= 1e-10 * weak(2));
+    CHECK(std::abs(rhoOf(w.Ksig) - weak.rhoY) <= 1e-10 * weak.rhoY);
     CHECK((s2.Ksig - s.Ksig).norm() == 0.0);              // the weak one in between changed nothing
   }
   TEST_CASE("VMconst: a state left on the surface (f of round-off) stands with the elastic tangent / f = 1e-6 returns") {
-    for (const Vector3d& m : {weak, strong}) {
+    for (const MaterialConstants& m : {weak, strong}) {
       const Vector6d dir = devOf(plasticStrain()) + 0.01 * m1();
       const double r0 = rhoOf(Hooke3d(dir, m).Ksig);
       // rho_tr = rho_y (1 + 1e-12): f = 1e-12 <= 1e-9, the trial state stands
-      const Vector6d on = dir * (m(2) * (1 + 1e-12) / r0);
+      const Vector6d on = dir * (m.rhoY * (1 + 1e-12) / r0);
       const ConstOut o = VMconst(on, m);
-      CHECK((o.D - isoD(m(0), m(1))).norm() <= 1e-12 * o.D.norm());
+      CHECK((o.D - isoD(m.E, m.nu)).norm() <= 1e-12 * o.D.norm());
       CHECK(o.epsE == on);
       // rho_tr = rho_y (1 + 1e-6): returned, no deviatoric stiffness along the deviator
-      const Vector6d out = dir * (m(2) * (1 + 1e-6) / r0);
+      const Vector6d out = dir * (m.rhoY * (1 + 1e-6) / r0);
       const ConstOut p = VMconst(out, m);
-      CHECK(std::abs(rhoOf(p.Ksig) - m(2)) <= 1e-12 * m(2));
+      CHECK(std::abs(rhoOf(p.Ksig) - m.rhoY) <= 1e-12 * m.rhoY);
       Vector6d u = devOf(out);
       CHECK(rhoOf(p.D * u) <= 1e-6 * 2 * moduliOf(m).G * u.norm());
     }
   }
   TEST_CASE("VMconst: isotropic: the return of a rotated strain is the rotated return (two materials)") {
-    for (const Vector3d& m : {strong, weak})
+    for (const MaterialConstants& m : {strong, weak})
       for (const Matrix3d& Q : {rot3(0.5, -0.8), rot3(-1.3, 0.2)}) {
         const Vector6d eps = plasticStrain();
         Matrix3d et;
@@ -374,7 +374,7 @@ TEST_SUITE("VMconst") {
 TEST_SUITE("VMconst") {
   // the stress reached by driving a strain path in 200 equal increments through VMconst
   // (the elastic strain carried from one increment to the next, as detMPs carries epsEn)
-  Vector6d driven(const Vector6d& total, const Vector3d& m) {
+  Vector6d driven(const Vector6d& total, const MaterialConstants& m) {
     Vector6d epsE = Vector6d::Zero(), tau = Vector6d::Zero();
     for (int k = 0; k < 200; ++k) {
       const ConstOut out = VMconst(epsE + total / 200, m);
@@ -387,9 +387,9 @@ TEST_SUITE("VMconst") {
   }
 
   TEST_CASE("VMconst: rhoY = sqrt(2) c_u: plane-strain simple and pure shear yield at tau_max = 10 kPa, uniaxial at 17.32 kPa") {
-    const Vector3d soil(1e7, 0.49, 14142.1356);                 // undrained: nu near 0.5
+    const MaterialConstants soil{1e7, 0.49, 14142.1356};        // undrained: nu near 0.5
     const double cu = 10000.0, sigmaY = 17320.508;              // by hand
-    const double Gs = soil(0) / (2 * (1 + soil(1)));            // 3.356e6 Pa: yield at gamma ~ 3e-3
+    const double Gs = soil.E / (2 * (1 + soil.nu));             // 3.356e6 Pa: yield at gamma ~ 3e-3
     Vector6d simple = Vector6d::Zero(), pure = Vector6d::Zero(), axi = Vector6d::Zero();
     simple(3) = 0.05;                                           // gamma_xy, 17 times the yield strain
     pure << 0.025, -0.025, 0, 0, 0, 0;                          // eps_xx = -eps_yy, eps_zz = 0

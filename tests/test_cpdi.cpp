@@ -4,10 +4,10 @@
 // the domain averages by 3 x 3 Gauss quadrature of the isoparametric map of the
 // domain (exact, since every integrand is at most quadratic in xi and eta).
 #include "ample/basis/MPMbasis.h"
-#include "ample/basis/SvpCPDI.h"
-#include "ample/basis/domainCorners.h"
-#include "ample/elemMPinfo.h"
-#include "ample/meshes/formCoord2D.h"
+#include "ample/cpdi/SvpCPDI.h"
+#include "ample/cpdi/domainCorners.h"
+#include "ample/cpdi/elemMPinfoCPDI.h"
+#include "setups/formCoord2D.h"
 #include <doctest/doctest.h>
 #include <algorithm>
 #include <cmath>
@@ -361,7 +361,7 @@ TEST_SUITE("SvpCPDI1") {
 }
 
 TEST_SUITE("SvpCPDI2") {
-  TEST_CASE("SvpCPDI2: CPDI1 and CPDI2 points through elemMPinfo/MPMbasis reproduce linear fields") {
+  TEST_CASE("SvpCPDI2: CPDI1 and CPDI2 points through elemMPinfoCPDI reproduce linear fields") {
     Mesh mesh = grid();
     std::vector<MaterialPoint> mpData(2);
     MaterialPoint& p1 = mpData[0];  // CPDI1: general parallelogram
@@ -375,7 +375,7 @@ TEST_SUITE("SvpCPDI2") {
     p2.cpdi = CpdiDomain();
     p2.cpdi->xc = distortedQuad();
     p2.mpC = gaussAverages(p2.cpdi->xc, Eigen::Vector4d::Zero()).centroid;
-    elemMPinfo(mesh, mpData);
+    elemMPinfoCPDI(mesh, mpData);
 
     const Corners xs[2] = {parallelogram(p1.mpC, p1.cpdi->st), p2.cpdi->xc};
     for (int p = 0; p < 2; ++p) {

@@ -8,7 +8,8 @@
 #include "ample/detFDoFs.h"
 #include "ample/remedies/loneNodes.h"
 #include "ample/detMPs.h"
-#include "ample/meshes/formCoord2D.h"
+#include "ample/cpdi/elemMPinfoCPDI.h"
+#include "setups/formCoord2D.h"
 #include "testProblems.h"
 #include <doctest/doctest.h>
 #ifdef _OPENMP
@@ -88,7 +89,7 @@ int rankOf(const SpMat& Kt, const std::vector<int>& fd) {
 }  // namespace
 
 TEST_SUITE("elemMPinfo") {
-  TEST_CASE("elemMPinfo: a CPDI corner on the far edge of its cell does not link the nodes with zero basis there") {
+  TEST_CASE("elemMPinfoCPDI: a CPDI corner on the far edge of its cell does not link the nodes with zero basis there") {
     // the collapse toe: a CPDI2 point on the base (y = 0) whose lower-right corner
     // (2.1, 0) is the only corner in cell 2 = [2,3] x [0,1]; node 8 at (3, 1) has
     // N = 0.1 x 0 = 0 there, so S = 0 and dS = 0: linked, it was an empty column
@@ -107,7 +108,7 @@ TEST_SUITE("elemMPinfo") {
       } else {
         mp.mpC = mp.cpdi->xc.rowwise().mean();
       }
-      elemMPinfo(mesh, mpData);
+      elemMPinfoCPDI(mesh, mpData);
       CHECK(mp.ne == 2);             // cells 1 and 2
       CHECK(linked(mp, 3));          // (3, 0): N = 0.1 at the corner
       CHECK_FALSE(linked(mp, 8));    // (3, 1): N = 0 at every corner
@@ -146,7 +147,7 @@ TEST_SUITE("detFDoFs") {
       for (int n = 0; n < an.mesh.nodes(); ++n)
         if (std::abs(an.mesh.coord(n, 1) - 1.0) < 1e-12)
           for (int i = 0; i < nD; ++i) an.mesh.bc.push_back({dof(n, i), 0.0});
-      elemMPinfo(an.mesh, an.mpData);
+      elemMPinfoCPDI(an.mesh, an.mpData);
       const int n43 = 3 * 5 + 4, n44 = 4 * 5 + 4, n34 = 4 * 5 + 3;  // nodes (4,3) (4,4) (3,4)
       for (int n : {n43, n44, n34}) CHECK(linked(mp, n));
       const std::vector<int> fd = detFDoFsLone(an.mesh, an.mpData), fdAll = activeCellDoFs(an.mesh);

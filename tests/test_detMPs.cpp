@@ -36,7 +36,7 @@ TEST_SUITE("detMPs") {
             const double p = tau.head<3>().sum() / 3.0;
             const double rho = std::sqrt((tau.head<3>().array() - p).square().sum() +
                                          2.0 * tau.tail<3>().squaredNorm());
-            REQUIRE(rho == doctest::Approx(mp.mCst(2)).epsilon(1e-10));
+            REQUIRE(rho == doctest::Approx(mp.mCst.rhoY).epsilon(1e-10));
           }
         }
         CHECK(testing::tangentError(an, uvw, Formulation::UL) < 1e-6);
@@ -119,13 +119,16 @@ TEST_SUITE("detMPs") {
   // GIMP points, mp x mp in each of cells x cells (a margin of 2 cells), plastic,
   // prestrained: 4,096 points for cells = 16, mp = 4, two threads' shares
   Analysis largeBlock(int cells = 16, int mp = 4) {
-    Params P = commonParams(1);
-    for (auto kv : std::vector<std::pair<const char*, double>>{
-             {"mp", mp}, {"mpType", 2}, {"cmType", 2}, {"E", 1e6}, {"nu", 0.3}, {"rhoY", 2e3}})
-      setDefault(P, kv.first, kv.second);
+    Common p;
+    p.mp = mp;
+    p.mpType = MpType::GIMP;
+    p.cmType = CmType::VonMises;
+    p.E = 1e6;
+    p.nu = 0.3;
+    p.rhoY = 2e3;
     Analysis an;
     an.mesh = formCoord2D(cells + 4, cells + 4, cells + 4.0, cells + 4.0);
-    fillBlock(an.mpData, Vector2d(2, 2), cells, cells, an.mesh.h, P, 1000.0);
+    fillBlock(an.mpData, Vector2d(2, 2), cells, cells, an.mesh.h, p, 1000.0);
     testing::prestrain(an.mpData, 3);
     elemMPinfo(an.mesh, an.mpData);
     return an;
@@ -261,7 +264,7 @@ TEST_SUITE("detMPs") {
     return {{c, c + 1}, {1 - r, r}, {-1.0, 1.0}};
   }
   // a point of the tensor-product basis bx (x) by, material m, volume V
-  MaterialPoint handPoint(const Basis1& bx, const Basis1& by, MpType type, const Vector3d& m, double V) {
+  MaterialPoint handPoint(const Basis1& bx, const Basis1& by, MpType type, const MaterialConstants& m, double V) {
     MaterialPoint mp;
     mp.mpType = type;
     mp.cmType = CmType::Elastic;
@@ -278,7 +281,7 @@ TEST_SUITE("detMPs") {
       }
     return mp;
   }
-  const Vector3d matA(1e6, 0.3, 2e3), matB(3e5, 0.15, 1e3);
+  const MaterialConstants matA{1e6, 0.3, 2e3}, matB{3e5, 0.15, 1e3};
   std::vector<MaterialPoint> handPoints() {
     std::vector<MaterialPoint> pts = {handPoint(gimp11(), gimp09(), MpType::GIMP, matA, 0.25),
                                       handPoint(mpm(0.3), mpm(0.6), MpType::MPM, matB, 0.2),
@@ -294,8 +297,8 @@ TEST_SUITE("detMPs") {
     for (int d = 0; d < 18; ++d) u(d) = size * std::sin(1.7 * d + 0.3);
     return u;
   }
-  double lamOf(const Vector3d& m) { return m(0) * m(1) / ((1 + m(1)) * (1 - 2 * m(1))); }
-  double muOf(const Vector3d& m) { return m(0) / (2 * (1 + m(1))); }
+  double lamOf(const MaterialConstants& m) { return m.E * m.nu / ((1 + m.nu) * (1 - 2 * m.nu)); }
+  double muOf(const MaterialConstants& m) { return m.E / (2 * (1 + m.nu)); }
   // eqs 16 and 14 by hand for SS: f = sum_p sum_j dS_ja sigma_ij V, K = sum_p dS_ja A_ijkl dS_lb V
   void handSS(const std::vector<MaterialPoint>& pts, const Eigen::VectorXd& u, Eigen::VectorXd& f,
               Eigen::MatrixXd& K) {

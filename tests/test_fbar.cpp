@@ -40,7 +40,7 @@ bool allYielding(const std::vector<MaterialPoint>& mpData) {
     const Vector6d tau = mp.sig * mp.F.determinant();
     const double p = tau.head<3>().sum() / 3.0;
     const double rho = std::sqrt((tau.head<3>().array() - p).square().sum() + 2.0 * tau.tail<3>().squaredNorm());
-    if (std::abs(rho - mp.mCst(2)) > 1e-9 * mp.mCst(2)) return false;
+    if (std::abs(rho - mp.mCst.rhoY) > 1e-9 * mp.mCst.rhoY) return false;
   }
   return true;
 }
@@ -58,7 +58,7 @@ TEST_SUITE("detMPsFbar") {
           CAPTURE(int(c));
           CAPTURE(int(form));
           Analysis an = testing::smallBlock(t, c);
-          for (MaterialPoint& mp : an.mpData) mp.mCst(1) = 0.49;
+          for (MaterialPoint& mp : an.mpData) mp.mCst.nu = 0.49;
           testing::prestrain(an.mpData, 7);
           for (MaterialPoint& mp : an.mpData) mp.mpC += Vector2d(0.13, -0.07);  // domains straddle edges
           elemMPinfo(an.mesh, an.mpData);

@@ -25,12 +25,12 @@ Mesh distorted() {
   for (const auto& r : d) x.row(int(r[0])) += Eigen::RowVector2d(r[1], r[2]);
   return generalMesh(x, g.etpl);
 }
-Params elastic(double E, double nu, int mpType = 1) {
-  Params P = commonParams(1);
-  setDefault(P, "mpType", mpType);
-  setDefault(P, "E", E);
-  setDefault(P, "nu", nu);
-  return P;
+Common elastic(double E, double nu, int mpType = 1) {
+  Common p;
+  p.mpType = MpType(mpType);
+  p.E = E;
+  p.nu = nu;
+  return p;
 }
 double cross(const Vector2d& a, const Vector2d& b) { return a(0) * b(1) - a(1) * b(0); }
 }  // namespace
@@ -121,9 +121,9 @@ TEST_SUITE("femode") {
       fixDofs(a[k].mesh, 1, [](double, double Y) { return Y < 1e-9; });
       fixDofs(a[k].mesh, 1, [](double, double Y) { return Y > 3 - 1e-9; }, -0.3);  // 10 % squeeze
       a[k].fem = k == 1;
-      Params P = elastic(1e6, 0.3);
-      setDefault(P, "cmType", 2);
-      setDefault(P, "rhoY", 2e4);  // von Mises, yields in the step
+      Common P = elastic(1e6, 0.3);
+      P.cmType = CmType::VonMises;
+      P.rhoY = 2e4;  // von Mises, yields in the step
       fillCells(a[k].mpData, a[k].mesh, P, 0.0);
       RunLog log;
       solveRun(a[k], log);
@@ -148,8 +148,8 @@ TEST_SUITE("femode") {
     const Setup* s = findSetup("doughnut");
     REQUIRE(s != nullptr);
     Params P = s->params();
-    setDefault(P, "fem", 1);
-    setDefault(P, "mpType", 3);
+    setParam(P, "fem", 1);
+    setParam(P, "mpType", 3);
     CHECK_THROWS_AS(s->setupGrid(P), InputError);
   }
 

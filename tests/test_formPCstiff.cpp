@@ -4,7 +4,7 @@
 // against central differences of the PC internal force. PC and UL describe the
 // same equilibrium in two frames, so their internal forces (and hence their
 // tangents) agree for the same increment.
-#include "ample/program/run.h"
+#include "setups/program/run.h"
 #include "ample/detFDoFs.h"
 #include "ample/remedies/loneNodes.h"
 #include "ample/formulations/detMPsForm.h"
@@ -33,7 +33,7 @@ void requireAllYielding(const std::vector<MaterialPoint>& mpData) {
     const double p = tau.head<3>().sum() / 3.0;
     const double rho = std::sqrt((tau.head<3>().array() - p).square().sum() +
                                  2.0 * tau.tail<3>().squaredNorm());
-    REQUIRE(rho == doctest::Approx(mp.mCst(2)).epsilon(1e-10));
+    REQUIRE(rho == doctest::Approx(mp.mCst.rhoY).epsilon(1e-10));
   }
 }
 
@@ -54,7 +54,7 @@ struct PCState {
   Matrix6d D;
 };
 PCState pcStress(const Matrix3d& dF, const Matrix3d& bEn, double Jn, CmType cm,
-                 const Vector3d& mCst) {
+                 const MaterialConstants& mCst) {
   PCState s;
   s.BeT = dF * bEn * dF.transpose();
   const Vector6d epsTr = tensorToStrain(0.5 * symLog(s.BeT));
@@ -69,12 +69,12 @@ PCState pcStress(const Matrix3d& dF, const Matrix3d& bEn, double Jn, CmType cm,
 Analysis mpmBeam(Formulation f, const std::vector<std::pair<std::string, double>>& set) {
   const Setup* s = findSetup("beam");
   Params P = s->params();
-  setDefault(P, "a", 1);
-  setDefault(P, "mpType", int(MpType::MPM));
-  setDefault(P, "formulation", int(f));
-  for (const auto& kv : set) setDefault(P, kv.first, kv.second);
+  setParam(P, "a", 1);
+  setParam(P, "mpType", int(MpType::MPM));
+  setParam(P, "formulation", int(f));
+  for (const auto& kv : set) setParam(P, kv.first, kv.second);
   Analysis an = s->setupGrid(P);
-  if (get(P, "ghost") > 0) an.ghostFrom = 1;  // the penalty on from the start, not after a failure
+  if (P.named("ghost").value() > 0) an.ghostFrom = 1;  // the penalty on from the start, not after a failure
   RunLog log;
   solveRun(an, log);
   return an;
@@ -83,7 +83,7 @@ Analysis mpmBeam(Formulation f, const std::vector<std::pair<std::string, double>
 
 TEST_SUITE("formPCstiff") {
   TEST_CASE("formPCstiff: A~ equals central differences of P~ = tau dF^-T / Jn (all 9 components)") {
-    const Vector3d mCst(1e6, 0.3, 2e3);
+    const MaterialConstants mCst{1e6, 0.3, 2e3};
     Matrix3d Fn;
     Fn << 1.04, 0.03, 0, -0.02, 0.97, 0, 0, 0, 1;
     const double Jn = Fn.determinant();
@@ -99,7 +99,7 @@ TEST_SUITE("formPCstiff") {
       if (cm == CmType::VonMises) {  // the base state and the stencil are plastic
         const double p = s0.tau.trace() / 3.0;
         const double rho = (s0.tau - p * Matrix3d::Identity()).norm();
-        REQUIRE(rho == doctest::Approx(mCst(2)).epsilon(1e-10));
+        REQUIRE(rho == doctest::Approx(mCst.rhoY).epsilon(1e-10));
       }
       const Matrix9d A = formPCstiff(dF, Jn, s0.D, s0.tau, bEn, s0.BeT);
       Matrix9d Afd;
@@ -161,12 +161,12 @@ TEST_SUITE("formPCstiff") {
 
   TEST_CASE("formPCstiff: zero increment from an unstressed state gives the small-strain stiffness") {
     // dF = I, Jn = 1, b_e,n = I: A~_ijkl = D_ijkl (isotropic Hooke in tensor form)
-    const Vector3d mCst(1e6, 0.3, 2e3);
-    const Matrix6d D = elasticStiffness(mCst(0), mCst(1));
+    const MaterialConstants mCst{1e6, 0.3, 2e3};
+    const Matrix6d D = elasticStiffness(mCst.E, mCst.nu);
     const Matrix3d I = Matrix3d::Identity();
     const Matrix9d A = formPCstiff(I, 1.0, D, Matrix3d::Zero(), I, I);
-    const double lam = mCst(0) * mCst(1) / ((1 + mCst(1)) * (1 - 2 * mCst(1)));
-    const double G = mCst(0) / (2 * (1 + mCst(1)));
+    const double lam = mCst.E * mCst.nu / ((1 + mCst.nu) * (1 - 2 * mCst.nu));
+    const double G = mCst.E / (2 * (1 + mCst.nu));
     Matrix9d Aref = Matrix9d::Zero();
     for (int i = 0; i < 3; ++i)
       for (int j = 0; j < 3; ++j)
@@ -206,8 +206,8 @@ TEST_SUITE("formPCstiff") {
 TEST_SUITE("formPCstiff") {
   TEST_CASE("formPCstiff: MPM beam step 11 / PC equals UL but Kt has the zero mode of a lone stress-free point") {
     Params P = findSetup("beam")->params();  // UL: the converged increment of load step 11
-    setDefault(P, "a", 1);
-    setDefault(P, "mpType", int(MpType::MPM));
+    setParam(P, "a", 1);
+    setParam(P, "mpType", int(MpType::MPM));
     Analysis an = findSetup("beam")->setupGrid(P);
     std::vector<MaterialPoint> start;                         // the points at the start of step 11
     an.beforeStep = [&start](Analysis& a, int lstp) { if (lstp == 11) start = a.mpData; };

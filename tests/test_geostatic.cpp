@@ -8,7 +8,7 @@
 // parameter: no gravity, a von Mises point beyond yield (K0 and the range this body allows).
 #include "ample/errors.h"
 #include "ample/initial/geostatic.h"
-#include "ample/program/run.h"
+#include "setups/program/run.h"
 #include "constitutive/Hooke3d.h"
 #include "testProblems.h"
 #include <doctest/doctest.h>
@@ -22,7 +22,7 @@ Analysis setupOf(const std::string& name, const std::vector<std::pair<std::strin
   const Setup* s = findSetup(name);
   REQUIRE(s != nullptr);
   Params P = s->params();
-  for (const auto& kv : set) setDefault(P, kv.first, kv.second);
+  for (const auto& kv : set) setParam(P, kv.first, kv.second);
   return s->setupGrid(P);
 }
 
@@ -40,8 +40,8 @@ TEST_SUITE("geostatic") {
   TEST_CASE("geostatic: elasticStrainOf is D^-1: Hooke3d of the strain gives the stress back (two materials)") {
     Vector6d sigma;
     sigma << -3.0e4, -5.0e4, -2.5e4, 1.2e4, -0.7e4, 0.4e4;
-    for (const Vector3d& mCst : {Vector3d(1e7, 0.3, 0), Vector3d(2e5, 0.0, 0)}) {
-      const Vector6d eps = elasticStrainOf(sigma, mCst(0), mCst(1));
+    for (const MaterialConstants& mCst : {MaterialConstants{1e7, 0.3, 0}, MaterialConstants{2e5, 0.0, 0}}) {
+      const Vector6d eps = elasticStrainOf(sigma, mCst.E, mCst.nu);
       CHECK((Hooke3d(eps, mCst).Ksig - sigma).norm() <= 1e-12 * sigma.norm());
     }
   }

@@ -1,11 +1,11 @@
 // Tests of the grid functions: formCoord2D, detMpPos, shapefunc, elemForMP,
 // nodesForMP (cells and nodes linked to points near cell edges).
-#include "ample/meshes/detMpPos.h"
+#include "setups/detMpPos.h"
 #include "ample/basis/elemForMP.h"
 #include "ample/errors.h"
-#include "ample/meshes/formCoord2D.h"
+#include "setups/formCoord2D.h"
 #include "ample/basis/nodesForMP.h"
-#include "ample/meshes/shapefunc.h"
+#include "setups/shapefunc.h"
 #include <doctest/doctest.h>
 #include <cmath>
 #include <vector>

@@ -11,7 +11,7 @@
 //    uniform load, plus the shear deflection), written here from the points' data;
 //  - the reaction of the implicit boundary (sum of an.frct) equals the total body force
 //    (sum of b V over the points) at every load step to 1e-8, at 0 and 45 degrees.
-#include "ample/program/run.h"
+#include "setups/program/run.h"
 #include "testProblems.h"
 #include <cmath>
 

@@ -65,7 +65,7 @@ Eigen::VectorXd bilinearFE(int n, double E, double nu, double b) {
 double result(const Analysis& an, const std::string& setup, const std::vector<std::pair<std::string, double>>& set,
               const std::string& name) {
   Params P = findSetup(setup)->params();
-  for (const auto& kv : set) setDefault(P, kv.first, kv.second);
+  for (const auto& kv : set) setParam(P, kv.first, kv.second);
   for (const auto& r : findSetup(setup)->results(an, P))
     if (r.first == name) return r.second;
   FAIL("no result " << name);

@@ -3,9 +3,9 @@
 // inclined roller against the aligned one (eqs 23-24) in rotated axes (eq 25), and the
 // setup ibblock (sec 5.1) against the grid-aligned solution with nodal rollers and
 // against the uniform stress. Expected values are built here, not from the library.
-#include "ample/meshes/formCoord2D.h"
+#include "setups/formCoord2D.h"
 #include "ample/boundaries/ibStiffness.h"
-#include "ample/program/run.h"
+#include "setups/program/run.h"
 #include "setups/setupHelpers.h"
 #include "setups/setups.h"
 #include <doctest/doctest.h>
@@ -72,11 +72,11 @@ Analysis block(double theta, bool nodal, RunLog& log, int ibK2 = 0) {
   const Setup* s = findSetup("ibblock");
   REQUIRE(s != nullptr);
   Params P = s->params();
-  setDefault(P, "theta", theta);
-  setDefault(P, "ibK2", ibK2);
+  setParam(P, "theta", theta);
+  setParam(P, "ibK2", ibK2);
   Analysis an = s->setupGrid(P);
   if (nodal) {  // the same points, the rollers as nodal conditions on the grid lines
-    an.boundaries.clear();
+    an.boundaries.reset();
     auto on = [](double v, double c) { return std::abs(v - c) < 1e-9; };
     fixDofs(an.mesh, 0, [&](double x, double) { return on(x, 0.04); });
     fixDofs(an.mesh, 0, [&](double x, double) { return on(x, 0.14); }, -1e-3);
@@ -258,8 +258,8 @@ TEST_SUITE("ibStiffness") {
     for (double dh : {1e-4, 1e-5}) {
       const Setup* s = findSetup("ibblock");
       Params P = s->params();
-      setDefault(P, "delta", dh);
-      setDefault(P, "ibK2", 0);
+      setParam(P, "delta", dh);
+      setParam(P, "ibK2", 0);
       RunLog log;
       Analysis an = s->setupGrid(P);
       solveRun(an, log);
@@ -275,7 +275,7 @@ TEST_SUITE("ibStiffness") {
     for (double th : {0.0, 30.0, 45.0, 90.0}) {
       RunLog log;
       Params P = s->params();
-      setDefault(P, "theta", th);
+      setParam(P, "theta", th);
       Analysis an = s->setupGrid(P);
       solveRun(an, log);
       REQUIRE(log.converged);
@@ -300,10 +300,10 @@ TEST_SUITE("ibStiffness") {
     // PrescribedNormal); the four sum to zero (no body force)
     const Setup* s = findSetup("ibblock");
     Params P = s->params();
-    setDefault(P, "theta", 30);
-    setDefault(P, "ibK2", 1);
+    setParam(P, "theta", 30);
+    setParam(P, "ibK2", 1);
     Analysis an = s->setupGrid(P);
-    const std::vector<Boundary> b0 = an.boundaries;
+    const std::vector<Boundary> b0 = boundariesOf(an);
     RunLog log;
     solveRun(an, log);
     REQUIRE(log.converged);
@@ -326,11 +326,11 @@ TEST_SUITE("ibStiffness") {
     // side, so the answer is the same uniform stress; the side moves by du after the step
     const Setup* s = findSetup("ibblock");
     Params P = s->params();
-    setDefault(P, "theta", 30);
+    setParam(P, "theta", 30);
     Analysis an = s->setupGrid(P);
-    REQUIRE(an.boundaries.size() == 4);
-    an.boundaries[1].type[0] = BoundaryType::Prescribed;
-    const Boundary before = an.boundaries[1];
+    REQUIRE(boundariesOf(an).size() == 4);
+    editBoundaries(an)[1].type[0] = BoundaryType::Prescribed;
+    const Boundary before = boundariesOf(an)[1];
     const Vector2d du = 1e-3 * Vector2d(-std::cos(M_PI / 6), -std::sin(M_PI / 6));
     CHECK((before.du[0] - du).norm() < 1e-18);
     RunLog log;
@@ -340,8 +340,8 @@ TEST_SUITE("ibStiffness") {
     CHECK(r[0].second < 1e-7);                                    // ru
     CHECK(r[1].second < 1e-7);                                    // r_sxx
     CHECK(r[2].second < 1e-7);                                    // r_syy
-    CHECK((an.boundaries[1].x[0] - (before.x[0] + du)).norm() < 1e-15);  // moveBoundaries
-    CHECK((an.boundaries[1].x[1] - (before.x[1] + du)).norm() < 1e-15);
-    CHECK((an.boundaries[0].x[1] - before.x[0]).norm() == 0.0);  // a roller stays where it was
+    CHECK((boundariesOf(an)[1].x[0] - (before.x[0] + du)).norm() < 1e-15);  // moveBoundaries
+    CHECK((boundariesOf(an)[1].x[1] - (before.x[1] + du)).norm() < 1e-15);
+    CHECK((boundariesOf(an)[0].x[1] - before.x[0]).norm() == 0.0);  // a roller stays where it was
   }
 }

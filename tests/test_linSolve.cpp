@@ -61,7 +61,7 @@ CollapseStep1 collapseStep1() {
   Params P = s->params();
   Analysis an = s->setupGrid(P);
   const int nDoF = an.mesh.nDoF();
-  elemMPinfo(an.mesh, an.mpData, an.fem);
+  elemMPinfo(an.mesh, an.mpData);
   CollapseStep1 c{SpMat(), detFDoFsLone(an.mesh, an.mpData)};
   DetMPsOut mps;
   mps.Kt = stiffnessPattern(nDoF, an.mpData);
@@ -382,7 +382,7 @@ TEST_SUITE("linSolve") {
       const std::string option = choice == LinearSolver::MUMPS ? "-DAMPLE_MUMPS=ON" : "-DAMPLE_PETSC=ON";
       CAPTURE(name);
       Params P = s->params();
-      setDefault(P, "solver", int(choice));
+      setParam(P, "solver", int(choice));
       std::string message;
       try {
         s->setupGrid(P);

@@ -7,6 +7,7 @@
 // areas, the bilinear map written out, central differences, the regular grid's
 // fast path (SvpMPM, elemForMP) and the analytic Hencky stress of a uniform stretch.
 #include "ample/basis/MPMbasis.h"
+#include "ample/meshes/elemMPinfoMesh.h"
 #include "ample/meshes/cellBasis.h"
 #include "ample/meshes/cellSearch.h"
 #include "ample/boundaries/cutCells.h"
@@ -98,7 +99,7 @@ void runBothWays(const std::string& name, const std::vector<std::pair<std::strin
   const Setup* s = findSetup(name);
   REQUIRE(s != nullptr);
   Params P = s->params();
-  for (const auto& kv : set) setDefault(P, kv.first, kv.second);
+  for (const auto& kv : set) setParam(P, kv.first, kv.second);
   Analysis grid = s->setupGrid(P), quads = s->setupGrid(P);
   quads.mesh = asQuads(quads.mesh);
   RunLog l1, l2;
@@ -441,7 +442,7 @@ TEST_SUITE("meshRuns") {
         mp.mpType = MpType::MPM;
         mp.mpC = mp.X0 = (2.0 / 3) * X.col(a) + (1.0 / 6) * (X.col((a + 1) % 3) + X.col((a + 2) % 3));
         mp.vp = mp.vp0 = A / 3;
-        mp.mCst << E, nu, 0;
+        mp.mCst = {E, nu, 0};
         an.mpData.push_back(mp);
       }
     }
@@ -459,28 +460,26 @@ TEST_SUITE("meshRuns") {
 }
 
 namespace {
-Params gimpParams() {
-  Params P = commonParams(1);
-  setDefault(P, "mpType", 2);
-  return P;
+Params gimpParams(Common& p) {  // GIMP: Common's default
+  return commonParams(p);
 }
-Analysis gimpOnQuads(const Params& P) {
+Analysis gimpOnQuads(const Common& p) {
   Analysis an;
   an.mesh = asQuads(formCoord2D(4, 4, 4.0, 4.0));
-  fillBlock(an.mpData, Vector2d(1, 1), 2, 2, Vector2d(1, 1), P, 1000.0);
+  fillBlock(an.mpData, Vector2d(1, 1), 2, 2, Vector2d(1, 1), p, 1000.0);
   return an;
 }
-Results noResults(const Analysis&, const Params&) { return {}; }
+Results noResults(const Analysis&, const Common&) { return {}; }
 }  // namespace
 
 TEST_SUITE("meshRefusals") {
   TEST_CASE("meshRefusals: GIMP on a general mesh is an InputError naming mpType and the mesh (ample() and solve())") {
-    const Setup s{"gimpquads", "GIMP on a general mesh (test)", gimpParams, gimpOnQuads, noResults};
+    const Setup s{"gimpquads", "GIMP on a general mesh (test)", {gimpParams, gimpOnQuads, noResults}};
     RunOptions opt{AMPLE_TEST_TMP "/gimpquads", 0, true, 0};
-    CHECK_THROWS_WITH_AS(ample::ample(s, gimpParams(), opt),
+    CHECK_THROWS_WITH_AS(ample::ample(s, s.params(), opt),
                          doctest::Contains("mpType=2 (GIMP) needs the regular grid; the background mesh is a "
                                            "quadrilateral mesh"), InputError);
-    Analysis an = gimpOnQuads(gimpParams());
+    Analysis an = gimpOnQuads(Common());
     RunLog log;
     CHECK_THROWS_WITH_AS(solveRun(an, log), doctest::Contains("mpType=2 (GIMP)"), InputError);
     MaterialPoint mp = an.mpData[0];

@@ -2,7 +2,7 @@
 // the first nn its own, the rest zero; a copy of a point is a copy of its basis and of its CPDI
 // domain; the size of a point (the memory of a large run).
 #include "ample/elemMPinfo.h"
-#include "ample/meshes/formCoord2D.h"
+#include "setups/formCoord2D.h"
 #include "setups/setupHelpers.h"
 #include "setups/setups.h"
 #include <doctest/doctest.h>
@@ -12,11 +12,11 @@ using namespace ample;
 namespace {
 // a block of 2 x 2 GIMP points per cell, in cells [1,3) x [1,3) of a 4 x 4 grid
 std::vector<MaterialPoint> block(const Mesh& mesh) {
-  Params P = commonParams(1);
-  setDefault(P, "mp", 2);
-  setDefault(P, "mpType", 2);
+  Common p;
+  p.mp = 2;
+  p.mpType = MpType::GIMP;
   std::vector<MaterialPoint> mpData;
-  fillBlock(mpData, Vector2d(1, 1), 2, 2, mesh.h, P, 1000.0);
+  fillBlock(mpData, Vector2d(1, 1), 2, 2, mesh.h, p, 1000.0);
   return mpData;
 }
 // the basis of a point as plain numbers: nodes, then S, then dS/dX, dS/dY of each node

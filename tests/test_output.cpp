@@ -1,6 +1,6 @@
 // Tests of the output (postPro, makeVtk, makeVtkMP, makeVtkWriter, writeOutput): files
 // written by a short run are read back and compared with the state in memory.
-#include "ample/program/run.h"
+#include "setups/program/run.h"
 #include "testProblems.h"
 #include <doctest/doctest.h>
 #include <algorithm>
@@ -86,9 +86,9 @@ TEST_SUITE("output") {
     const std::string dir = std::string(AMPLE_TEST_TMP) + "/output_compaction";
     const Setup* s = findSetup("compaction");
     Params P = s->params();
-    setDefault(P, "nelsy", 4);
-    setDefault(P, "lstps", 2);
-    setDefault(P, "E", 1e6);  // stiff enough for two load steps
+    setParam(P, "nelsy", 4);
+    setParam(P, "lstps", 2);
+    setParam(P, "E", 1e6);  // stiff enough for two load steps
     RunOptions opt{dir, 1, true};
     REQUIRE(ample::ample(*s, P, opt) == 0);
 
@@ -143,10 +143,10 @@ TEST_SUITE("output") {
     const Setup* s = findSetup("compaction");
     for (int lstps : {1, 3}) {
       Params P = s->params();
-      setDefault(P, "nelsy", 4);
-      setDefault(P, "lstps", lstps);
-      setDefault(P, "E", 1e6);
-      setDefault(P, "solver", 1);                     // LDLT
+      setParam(P, "nelsy", 4);
+      setParam(P, "lstps", lstps);
+      setParam(P, "E", 1e6);
+      setParam(P, "solver", 1);                     // LDLT
       REQUIRE(ample::ample(*s, P, RunOptions{dir, 0, true}) == 0);
       const std::string json = testing::fileText(dir + "/summary.json");
       const size_t a = json.find("\"solver_analyses\": "), f = json.find("\"lu_fallbacks\": ");
@@ -165,12 +165,12 @@ TEST_SUITE("output") {
     const std::string dir = std::string(AMPLE_TEST_TMP) + "/output_novtk";
     const Setup* s = findSetup("compaction");
     Params P = s->params();
-    setDefault(P, "nelsy", 4);
-    setDefault(P, "lstps", 3);
-    setDefault(P, "E", 1e6);
+    setParam(P, "nelsy", 4);
+    setParam(P, "lstps", 3);
+    setParam(P, "E", 1e6);
     REQUIRE(ample::ample(*s, P, RunOptions{dir, 1, true}) == 0);
     CHECK(std::filesystem::exists(dir + "/mpData_3.vtk"));
-    setDefault(P, "lstps", 2);
+    setParam(P, "lstps", 2);
     REQUIRE(ample::ample(*s, P, RunOptions{dir, 0, true}) == 0);
     CHECK(!std::filesystem::exists(dir + "/mpData_3.vtk"));
     CHECK(!std::filesystem::exists(dir + "/mesh.vtk"));
@@ -181,8 +181,8 @@ TEST_SUITE("output") {
     const std::string dir = std::string(AMPLE_TEST_TMP) + "/output_fail";
     const Setup* s = findSetup("collapse");
     Params P = s->params();
-    setDefault(P, "lstps", 2);
-    setDefault(P, "NRitMax", 2);  // too few passes to reach 1e-9
+    setParam(P, "lstps", 2);
+    setParam(P, "NRitMax", 2);  // too few passes to reach 1e-9
     CHECK(ample::ample(*s, P, RunOptions{dir, 1, true}) == 1);
     const std::string json = testing::fileText(dir + "/summary.json");
     CHECK(json.find("\"converged\": false") != std::string::npos);
@@ -199,9 +199,9 @@ TEST_SUITE("output") {
       const std::string dir = std::string(AMPLE_TEST_TMP) + "/output_vtk_" + run.first;
       const Setup* s = findSetup(run.first);
       Params P = s->params();
-      for (const auto& kv : run.second) setDefault(P, kv.first, kv.second);
+      for (const auto& kv : run.second) setParam(P, kv.first, kv.second);
       REQUIRE(ample::ample(*s, P, RunOptions{dir, 1, true}) == 0);
-      const int last = int(get(P, "lstps"));
+      const int last = int(P.named("lstps").value());
       const testing::CsvTable mp = testing::readCsvTable(dir + "/mp_final.csv");
       double sxy = 0, szz = 0;  // the run must exercise the shear and the out-of-plane stress
       for (size_t r = 0; r < mp.rows.size(); ++r) {
@@ -222,9 +222,9 @@ TEST_SUITE("output") {
     const std::string dir = std::string(AMPLE_TEST_TMP) + "/output_restore";
     const Setup* s = findSetup("collapse");
     Params P = s->params();
-    setDefault(P, "a", 1);
-    setDefault(P, "mp", 2);
-    setDefault(P, "NRitMax", 4);
+    setParam(P, "a", 1);
+    setParam(P, "mp", 2);
+    setParam(P, "NRitMax", 4);
     REQUIRE(ample::ample(*s, P, RunOptions{dir, 1, true}) == 1);
     const std::string json = testing::fileText(dir + "/summary.json");
     const size_t at = json.find("\"last_converged_step\": ");
@@ -264,7 +264,7 @@ TEST_SUITE("output") {
     const std::string dir = std::string(AMPLE_TEST_TMP) + "/output_stretch";
     const Setup* s = findSetup("stretch");
     Params P = s->params();
-    setDefault(P, "lstps", 5);
+    setParam(P, "lstps", 5);
     REQUIRE(ample::ample(*s, P, RunOptions{dir, 1, true}) == 0);
     for (int lstp : {1, 5}) {
       CAPTURE(lstp);
@@ -443,7 +443,7 @@ TEST_SUITE("output") {
     const Setup* s = findSetup("beam");
     Params P = s->params();
     for (const auto& kv : std::vector<std::pair<std::string, double>>{{"a", 1}, {"mp", 2}, {"lstps", 3}, {"P", 10e3}})
-      setDefault(P, kv.first, kv.second);
+      setParam(P, kv.first, kv.second);
     const std::string dirA = std::string(AMPLE_TEST_TMP) + "/output_vtk_ascii",
                       dirB = std::string(AMPLE_TEST_TMP) + "/output_vtk_binary";
     RunOptions opt{dirA, 1, true};
@@ -544,9 +544,9 @@ TEST_SUITE("output") {
     auto run = [&](const char* setup, const std::string& dir, bool every, bool fem) {
       const Setup* s = findSetup(setup);
       Params P = s->params();
-      setDefault(P, "lstps", 2);
-      if (std::string(setup) == "compaction") setDefault(P, "nelsy", 4), setDefault(P, "E", 1e6);
-      if (fem) setDefault(P, "fem", 1);
+      setParam(P, "lstps", 2);
+      if (std::string(setup) == "compaction") setParam(P, "nelsy", 4), setParam(P, "E", 1e6);
+      if (fem) setParam(P, "fem", 1);
       RunOptions opt{dir, 1, true};
       opt.vtkGridEvery = every;
       REQUIRE(ample::ample(*s, P, opt) == 0);

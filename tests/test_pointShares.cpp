@@ -1,11 +1,14 @@
 // Tests of pointShares (the point loops on several threads) and of the threaded
 // elemMPinfo: the shares cover every point once, in contiguous ranges; a failure
 // is reported for the first failing point in point order; the basis of 4,096
-// scattered GIMP and CPDI points on two threads equals the serial one bit for bit.
-#include "ample/elemMPinfo.h"
+// scattered GIMP and CPDI points on two threads equals the serial one bit for bit,
+// on the grid and (MPM and CPDI points) on a general mesh.
+#include "ample/cpdi/elemMPinfoCPDI.h"
 #include "ample/fast/elemMPinfoFast.h"
 #include "ample/errors.h"
-#include "ample/meshes/formCoord2D.h"
+#include "ample/meshes/elemMPinfoMesh.h"
+#include "ample/meshes/generalMesh.h"
+#include "setups/formCoord2D.h"
 #include "ample/solver/pointShares.h"
 #include "setups/setupHelpers.h"
 #include "setups/setups.h"
@@ -24,9 +27,11 @@ namespace {
 // with domains from 0.3 to 1.2 of their original half-lengths: every point links
 // its own set of 4 to 16 nodes; every 7th point is CPDI2 with skewed corners
 std::vector<MaterialPoint> scatteredPoints(const Mesh& mesh) {
-  Params P = commonParams(1);
-  for (auto kv : std::vector<std::pair<const char*, double>>{{"mp", 4}, {"mpType", 2}, {"E", 1e6}, {"nu", 0.3}})
-    setDefault(P, kv.first, kv.second);
+  Common P;
+  P.mp = 4;
+  P.mpType = MpType::GIMP;
+  P.E = 1e6;
+  P.nu = 0.3;
   std::vector<MaterialPoint> mpData;
   fillBlock(mpData, Vector2d(2, 2), 16, 16, mesh.h, P, 1000.0);
   std::mt19937 gen(11);
@@ -44,6 +49,31 @@ std::vector<MaterialPoint> scatteredPoints(const Mesh& mesh) {
     }
   }
   return mpData;
+}
+// the 20 x 20 grid as a general quadrilateral mesh, its interior nodes moved by up to
+// 0.15 h (the cells stay convex), and scatteredPoints in it as standard MPM points
+// (GIMP needs the grid) but for the CPDI2 ones
+Mesh jitteredMesh(std::vector<MaterialPoint>& mpData) {
+  const Mesh grid = formCoord2D(20, 20, 20.0, 20.0);
+  Eigen::MatrixX2d x = grid.coord;
+  std::mt19937 gen(5);
+  std::uniform_real_distribution<double> u(-0.15, 0.15);
+  for (int n = 0; n < grid.nodes(); ++n)
+    if (x(n, 0) > 0 && x(n, 0) < 20 && x(n, 1) > 0 && x(n, 1) < 20) x.row(n) += Eigen::RowVector2d(u(gen), u(gen));
+  mpData = scatteredPoints(grid);
+  for (MaterialPoint& mp : mpData)
+    if (!isCPDI(mp)) mp.mpType = MpType::MPM, mp.lp = mp.lp0 = Vector2d::Zero();
+  return generalMesh(x, grid.etpl);
+}
+// the points of a and b have the same cells, nodes and basis, bit for bit
+int sameBasis(const std::vector<MaterialPoint>& a, const std::vector<MaterialPoint>& b) {
+  int same = 0;
+  for (size_t p = 0; p < a.size(); ++p)
+    same += a[p].nn == b[p].nn && a[p].ne == b[p].ne && a[p].eIN == b[p].eIN &&
+            std::equal(a[p].nIN.begin(), a[p].nIN.begin() + a[p].nn, b[p].nIN.begin()) &&
+            std::equal(a[p].Svp.begin(), a[p].Svp.begin() + a[p].nn, b[p].Svp.begin()) &&
+            a[p].dSvp.leftCols(a[p].nn) == b[p].dSvp.leftCols(b[p].nn);
+  return same;
 }
 }  // namespace
 
@@ -98,14 +128,14 @@ TEST_SUITE("pointShares") {
 #endif
   }
 
-  TEST_CASE("elemMPinfoFast: the basis of 4,096 scattered GIMP and CPDI2 points on two threads equals elemMPinfo's bit for bit") {
+  TEST_CASE("elemMPinfoFast: the basis of 4,096 scattered GIMP and CPDI2 points on two threads equals the serial loop's (elemMPinfoCPDI) bit for bit") {
 #ifndef _OPENMP
-    MESSAGE("built without AMPLE_OPENMP: elemMPinfo is serial, nothing to compare");
+    MESSAGE("built without AMPLE_OPENMP: elemMPinfoFast is serial, nothing to compare");
 #else
     const int before = omp_get_max_threads();
     Mesh mesh[2] = {formCoord2D(20, 20, 20.0, 20.0), formCoord2D(20, 20, 20.0, 20.0)};
     std::vector<MaterialPoint> mps[2] = {scatteredPoints(mesh[0]), scatteredPoints(mesh[0])};
-    elemMPinfo(mesh[0], mps[0]);                      // the core, serial
+    elemMPinfoCPDI(mesh[0], mps[0]);                  // the serial loop of these points
     omp_set_num_threads(2);
     REQUIRE(pointThreads(4096) == std::min(2, 4096 / pointsPerThread()));
     elemMPinfoFast(mesh[1], mps[1]);
@@ -127,7 +157,7 @@ TEST_SUITE("pointShares") {
 #endif
   }
 
-  TEST_CASE("elemMPinfoFast: on two threads a point that left the grid is named as elemMPinfo names it (the first such point)") {
+  TEST_CASE("elemMPinfoFast: on two threads a point that left the grid is named as the serial loop names it (the first such point)") {
     Mesh mesh = formCoord2D(20, 20, 20.0, 20.0);
     std::vector<MaterialPoint> mpData = scatteredPoints(mesh);
     mpData[3000].mpC = Vector2d(25.0, 5.0);           // past x = 20, in the second share
@@ -141,7 +171,7 @@ TEST_SUITE("pointShares") {
       omp_set_num_threads(run + 1);
 #endif
       try {
-        if (run == 0) elemMPinfo(mesh, mpData);
+        if (run == 0) elemMPinfoCPDI(mesh, mpData);
         else elemMPinfoFast(mesh, mpData);
       } catch (const RunError& e) {
         what[run] = e.what();
@@ -152,5 +182,36 @@ TEST_SUITE("pointShares") {
 #endif
     CHECK(what[0].rfind("point 3000: ", 0) == 0);
     CHECK(what[1] == what[0]);
+  }
+
+  TEST_CASE("elemMPinfoFast: on a general mesh, 4,096 MPM points (and with CPDI2 points) on two threads equal elemMPinfoMesh's (elemMPinfoCPDI's) bit for bit, also keeping their cells (FE mode)") {
+#ifndef _OPENMP
+    MESSAGE("built without AMPLE_OPENMP: elemMPinfoFast is serial, nothing to compare");
+#else
+    const int before = omp_get_max_threads();
+    for (bool cpdi : {false, true}) {
+      CAPTURE(cpdi);
+      std::vector<MaterialPoint> mps[2];
+      Mesh mesh[2] = {jitteredMesh(mps[0]), jitteredMesh(mps[1])};
+      if (!cpdi)
+        for (auto& pts : mps)
+          for (MaterialPoint& mp : pts)
+            if (isCPDI(mp)) mp.mpType = MpType::MPM, mp.cpdi = Indirect<CpdiDomain>(), mp.lp = Vector2d::Zero();
+      for (bool keepCells : {false, true}) {        // the second pass keeps the cells of the first
+        if (cpdi) elemMPinfoCPDI(mesh[0], mps[0], keepCells);
+        else elemMPinfoMesh(mesh[0], mps[0], keepCells);
+        omp_set_num_threads(2);
+        REQUIRE(pointThreads(4096) == std::min(2, 4096 / pointsPerThread()));
+        elemMPinfoFast(mesh[1], mps[1], keepCells);
+        omp_set_num_threads(before);
+        REQUIRE(mps[0].size() == 4096);
+        CHECK(sameBasis(mps[0], mps[1]) == 4096);
+        CHECK(mesh[0].eInA == mesh[1].eInA);
+      }
+      int nnMax = 0;
+      for (const MaterialPoint& mp : mps[0]) nnMax = std::max(nnMax, mp.nn);
+      CHECK(nnMax == (cpdi ? 9 : 4));               // CPDI2 domains reach the next cells
+    }
+#endif
   }
 }

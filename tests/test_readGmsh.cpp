@@ -76,11 +76,11 @@ TEST_SUITE("readGmsh") {
       for (const char* name : {"bottom", "right", "top", "left", "hole"})
         for (int n : g.groups.at(name))
           an.mesh.bc.insert(an.mesh.bc.end(), {{dof(n, 0), ex * X0(n, 0)}, {dof(n, 1), ey * X0(n, 1)}});
-      Params P = commonParams(2);
-      setDefault(P, "mpType", 1);
-      setDefault(P, "E", E);
-      setDefault(P, "nu", nu);
-      fillCells(an.mpData, an.mesh, P, 0.0);
+      Common p;
+      p.mpType = MpType::MPM;
+      p.E = E;
+      p.nu = nu;
+      fillCells(an.mpData, an.mesh, p, 0.0);
       RunLog log;
       solveRun(an, log);
       REQUIRE(log.lastConverged == 2);

@@ -1,8 +1,8 @@
 // Tests of the failure paths of the main loop: a NaN names the load step, the
 // pass and the first bad point; a failed load step can be rescued by sub-division.
-#include "ample/program/run.h"
+#include "setups/program/run.h"
 #include "ample/errors.h"
-#include "ample/meshes/formCoord2D.h"
+#include "setups/formCoord2D.h"
 #include "ample/remedies/ghostPenalty.h"
 #include "ample/remedies/loadSteps.h"
 #include "testProblems.h"
@@ -23,7 +23,7 @@ TEST_SUITE("robustness") {
     for (int n = 0; n < an.mesh.nodes(); ++n) an.mesh.bc.push_back({dof(n, 1), 0.0});  // no rigid mode
     for (int n = 0; n < an.mesh.nodes(); ++n) an.mesh.bc.push_back({dof(n, 0), 0.0});
     an.mesh.bc.resize(an.mesh.bc.size() - 2 * 5);  // free a few x dofs of the block
-    an.mpData[3].mCst(0) = NAN;                    // Young's modulus of point 3
+    an.mpData[3].mCst.E = NAN;                    // Young's modulus of point 3
     RunLog log;
     try {
       solveRun(an, log);
@@ -41,21 +41,21 @@ TEST_SUITE("robustness") {
   TEST_CASE("robustness: sub-division rescues a compaction taken in one load step") {
     const Setup* s = findSetup("compaction");
     Params P = s->params();
-    setDefault(P, "nelsy", 8);
-    setDefault(P, "lstps", 1);
+    setParam(P, "nelsy", 8);
+    setParam(P, "lstps", 1);
     RunLog log0;
     Analysis plain = s->setupGrid(P);
     CHECK_THROWS_AS(solveRun(plain, log0), NewtonFailure);  // the paper's algorithm
     CHECK(plain.loneFrom == 0);                              // no lone node: the rule stays off
-    setDefault(P, "substeps", 8);
+    setParam(P, "substeps", 8);
     Analysis an = s->setupGrid(P);
     RunLog log;
     solveRun(an, log);
     CHECK(log.steps.back().converged);
     CHECK(log.steps.back().loadFactor == 1.0);
     CHECK(log.steps.size() > 2);                                     // every attempt recorded
-    setDefault(P, "substeps", 0);
-    setDefault(P, "lstps", 40);
+    setParam(P, "substeps", 0);
+    setParam(P, "lstps", 40);
     Analysis fine = s->setupGrid(P);
     RunLog logF;
     solveRun(fine, logF);
@@ -68,7 +68,7 @@ TEST_SUITE("robustness") {
   TEST_CASE("robustness: a point leaving the grid stops the run naming it / its position / the grid") {
     const Setup* s = findSetup("collapse");
     Params P = s->params();
-    setDefault(P, "width", 10);  // the toe reaches about 13.8 m
+    setParam(P, "width", 10);  // the toe reaches about 13.8 m
     Analysis an = s->setupGrid(P);
     RunLog log;
     try {
@@ -133,7 +133,7 @@ TEST_SUITE("robustness") {
     const Setup* s = findSetup("squeeze");
     REQUIRE(s != nullptr);
     Params P = s->params();
-    setDefault(P, "lstps", 4);
+    setParam(P, "lstps", 4);
     Analysis an = s->setupGrid(P);
     an.substeps = 2;
     const std::vector<BC> bc = an.mesh.bc;
@@ -142,23 +142,34 @@ TEST_SUITE("robustness") {
     std::vector<Done> done;
     Eigen::VectorXd applied = Eigen::VectorXd::Zero(an.mesh.nDoF());
     bool refuse = true;                                      // the first half fails once
-    Hooks hooks;
-    hooks.detMPs = pointLoopOf(an.formulation);               // SS: ample/formulations/
-    hooks.checkConverged = [&refuse](const Analysis& a, const Increment& inc, int NRit, double fErr,
-                                     const Eigen::VectorXd& uvw, const Eigen::VectorXd& load) {
-      if (refuse && inc.depth == 1 && inc.lf0 == 0.0) {
-        refuse = false;
-        throw NewtonFailure("the first half refused by the test", Failure::NotConverged);
+    struct Halves : Hooks {                                  // the squeeze's halves, the first refused once
+      PointLoop pointLoop;                                   // SS: ample/formulations/
+      bool& refuse;
+      std::vector<Done>& done;
+      Eigen::VectorXd& applied;
+      Halves(PointLoop l, bool& r, std::vector<Done>& d, Eigen::VectorXd& a)
+          : pointLoop(l), refuse(r), done(d), applied(a) {}
+      void detMPs(const Eigen::VectorXd& uvw, std::vector<MaterialPoint>& mpData, Formulation form,
+                  DetMPsOut& mps) const override {
+        pointLoop(uvw, mpData, form, mps);
       }
-      checkConverged(a, inc, NRit, fErr, uvw, load);
+      void checkConverged(const Analysis& a, const Increment& inc, int NRit, double fErr,
+                          const Eigen::VectorXd& uvw, const Eigen::VectorXd& load) const override {
+        if (refuse && inc.depth == 1 && inc.lf0 == 0.0) {
+          refuse = false;
+          throw NewtonFailure("the first half refused by the test", Failure::NotConverged);
+        }
+        ample::checkConverged(a, inc, NRit, fErr, uvw, load);
+      }
+      void afterUpdate(Analysis& a, const Increment& inc, int, double) const override {
+        done.push_back({inc.lf0, inc.lf1, inc.share, inc.depth});
+        applied += a.uvw;
+      }
+      void failedStep(Analysis& a, const Increment& inc, const RunError& e) const override {
+        retryStep(a, inc, e, *this, true);
+      }
     };
-    hooks.afterUpdate = [&](Analysis& a, const Increment& inc, int, double) {
-      done.push_back({inc.lf0, inc.lf1, inc.share, inc.depth});
-      applied += a.uvw;
-    };
-    hooks.failedStep = [](Analysis& a, const Increment& inc, const RunError& e, const Hooks& h) {
-      retryStep(a, inc, e, h, true);
-    };
+    const Halves hooks(pointLoopOf(an.formulation), refuse, done, applied);
     retryStep(an, {1, 0.0, 0.25, 1.0, 0, ""}, NewtonFailure("the whole step refused by the test", Failure::NotConverged),
               hooks, true);
     REQUIRE(done.size() == 3);                               // two quarters, then the second half
@@ -224,7 +235,7 @@ TEST_SUITE("stress") {
   TEST_CASE("stress: an unconstrained body (rigid-body mode) is reported as a singular stiffness") {
     const Setup* s = findSetup("collapse");
     Params P = s->params();
-    setDefault(P, "supports", 0);
+    setParam(P, "supports", 0);
     Analysis an = s->setupGrid(P);
     RunLog log;
     try {
@@ -282,7 +293,7 @@ TEST_SUITE("stress") {
         const Setup* s = findSetup("compaction");
         Params P = s->params();
         for (const auto& kv : std::vector<std::pair<std::string, double>>{{"nelsy", 1 << e}, {"mp", mp}, {"mpType", 1}})
-          setDefault(P, kv.first, kv.second);
+          setParam(P, kv.first, kv.second);
         Analysis an = s->setupGrid(P);
         RunLog log;
         try {  // 1 point per cell may empty a cell: then a clean, named stop is the answer
@@ -318,7 +329,7 @@ TEST_SUITE("robustness") {
       CAPTURE(name);
       const Setup* s = findSetup(name);
       Params P = s->params();
-      setDefault(P, "lstps", 10);
+      setParam(P, "lstps", 10);
       const std::string a = std::string(AMPLE_TEST_TMP) + "/det_a_" + name,
                         b = std::string(AMPLE_TEST_TMP) + "/det_b_" + name;
       REQUIRE(ample::ample(*s, P, RunOptions{a, 0, true}) == 0);
@@ -338,7 +349,7 @@ std::string tryAll(const std::string& name, const std::vector<std::pair<std::str
                    Analysis& an) {
   const Setup* s = findSetup(name);
   Params P = s->params();
-  for (const auto& kv : set) setDefault(P, kv.first, kv.second);
+  for (const auto& kv : set) setParam(P, kv.first, kv.second);
   an = s->setupGrid(P);
   RunLog log;
   try {
@@ -438,7 +449,7 @@ TEST_SUITE("robustness") {
     const Setup* s = findSetup("beam");
     Params P = s->params();
     const std::vector<std::pair<std::string, double>> set = {{"a", 1}, {"mp", 2}, {"lstps", lstps}, {"substeps", 8}};
-    for (const auto& kv : set) setDefault(P, kv.first, kv.second);
+    for (const auto& kv : set) setParam(P, kv.first, kv.second);
     const std::string dir = std::string(AMPLE_TEST_TMP) + "/subdivided_beam";
     REQUIRE(ample::ample(*s, P, RunOptions{dir, 1, true}) == 0);
 

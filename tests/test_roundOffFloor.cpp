@@ -2,7 +2,7 @@
 // it (checkConverged in ample/ample.cpp): the formula against a hand computation, the
 // estimate against the measured stalls of a compaction column driven to tol = 1e-16, its
 // growth n^1.5 along the column, and the tol that the message suggests passing when re-run.
-#include "ample/program/run.h"
+#include "setups/program/run.h"
 #include "ample/errors.h"
 #include "ample/solver/roundOffFloor.h"
 #include "setups/setups.h"
@@ -24,9 +24,9 @@ Failed runToFailure(int nelsy, double tol, int lstps = 40, bool acceptFloor = fa
                     Analysis* out = nullptr) {
   const Setup* s = findSetup("compaction");
   Params P = s->params();
-  setDefault(P, "nelsy", nelsy);
-  setDefault(P, "tol", tol);
-  setDefault(P, "lstps", lstps);
+  setParam(P, "nelsy", nelsy);
+  setParam(P, "tol", tol);
+  setParam(P, "lstps", lstps);
   Analysis an = s->setupGrid(P);
   RunOptions opt{"", 0, true, 0};
   opt.acceptFloor = acceptFloor;
@@ -57,7 +57,7 @@ TEST_SUITE("roundOffFloor") {
     mp.dSvp.col(0) << -1, 0.5;
     mp.dSvp.col(1) << 1, 0.5;
     mp.vp = 2;
-    mp.mCst << 3, 0, 0;
+    mp.mCst = {3, 0, 0};
     mp.sig << 1, -4, 0, 2, 0, 0;
     Eigen::VectorXd uvw(4), load(4);
     uvw << 0.5, -3, 1, 0;
@@ -124,8 +124,8 @@ TEST_SUITE("roundOffFloor") {
       CAPTURE(accept);
       const Setup* s = findSetup("collapse");
       Params P = s->params();
-      setDefault(P, "lstps", 2);
-      setDefault(P, "NRitMax", 3);
+      setParam(P, "lstps", 2);
+      setParam(P, "NRitMax", 3);
       Analysis an = s->setupGrid(P);
       RunLog log;
       RunOptions opt{"", 0, true, 0};
@@ -197,8 +197,8 @@ TEST_SUITE("long") {
     CHECK(m.find("e.g. tol=1e-8") != std::string::npos);
     const Setup* s = findSetup("compaction");
     Params P = s->params();
-    setDefault(P, "nelsy", 65536);
-    setDefault(P, "tol", 1e-8);
+    setParam(P, "nelsy", 65536);
+    setParam(P, "tol", 1e-8);
     Analysis an = s->setupGrid(P);
     RunLog log;
     solveRun(an, log, RunOptions{"", 0, true, 1});          // load step 1 only

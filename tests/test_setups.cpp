@@ -1,7 +1,7 @@
 // Tests of the setups' reported results against values that share no code with them
 // the compaction error of eq 37 and the analytic stress of eq 36
 // (setups/compaction.cpp results()), by hand and by an independent calculation.
-#include "ample/program/run.h"
+#include "setups/program/run.h"
 #include "testProblems.h"
 #include <doctest/doctest.h>
 #include <cmath>
@@ -14,7 +14,7 @@ Analysis compaction(const std::vector<std::pair<std::string, double>>& set, Para
   const Setup* s = findSetup("compaction");
   REQUIRE(s != nullptr);
   P = s->params();
-  for (const auto& kv : set) setDefault(P, kv.first, kv.second);
+  for (const auto& kv : set) setParam(P, kv.first, kv.second);
   Analysis an = s->setupGrid(P);
   RunLog log;
   solveRun(an, log);

@@ -2,7 +2,7 @@
 // writeOutput.cpp, the setups' results): every exit path leaves complete, valid output, a
 // figure that is undefined is null with its reason, and each stop message names a remedy
 // that, followed, completes the run.
-#include "ample/program/run.h"
+#include "setups/program/run.h"
 #include "ample/errors.h"
 #include "ample/remedies/loadSteps.h"
 #include "setups/setupHelpers.h"
@@ -109,7 +109,7 @@ TEST_SUITE("stops") {
     for (const Setup& s : setupsTable()) {
       CAPTURE(s.name);
       Params P = s.params();
-      if (std::string(s.name) == "ibcantilever") setDefault(P, "h", 0.005), setDefault(P, "mp", 2);
+      if (std::string(s.name) == "ibcantilever") setParam(P, "h", 0.005), setParam(P, "mp", 2);
       const Analysis an = s.setupGrid(P);                 // no step taken: uvw, history empty
       const Results r = s.results(an, P);
       for (const auto& f : r) {

@@ -3,9 +3,10 @@
 // the CPDI1 / CPDI2 domain updates ([CPDI] sec 2 (vii)). A domain update is
 // "correct" when the domain area 4 lx ly equals det(F) V0 and, for the stretch
 // and hydrostatic modes, when the half lengths equal l0 times the stretches.
-#include "ample/basis/domainCorners.h"
+#include "ample/cpdi/domainCorners.h"
+#include "ample/cpdi/elemMPinfoCPDI.h"
 #include "ample/elemMPinfo.h"
-#include "ample/meshes/formCoord2D.h"
+#include "setups/formCoord2D.h"
 #include "ample/domains/updateDomain.h"
 #include "ample/stiffness/tensorOps.h"
 #include "ample/updateMPs.h"
@@ -268,7 +269,7 @@ TEST_SUITE("updateDomain") {
       for (int c = 0; c < 4; ++c)
         A0 += 0.5 * (x0(0, c) * x0(1, (c + 1) % 4) - x0(0, (c + 1) % 4) * x0(1, c));
       mp.vp0 = mp.vp = A0;
-      elemMPinfo(mesh, mpData);
+      elemMPinfoCPDI(mesh, mpData);
       mp.F = F3(m.F);
       updateDomain(mesh, homogeneousUvw(mesh, m.F), DomainUpdate::Uii, mp);
       CHECK((mp.cpdi->xc - m.F * x0).norm() <= tolOK);
@@ -314,9 +315,12 @@ TEST_SUITE("updateDomain") {
     updateDomain(mesh, uvw, DomainUpdate::Corner, direct);
     CHECK((direct.lp - lExpected).norm() <= tolOK);
 
-    updateMPs(mesh, uvw, mpData, [](const Mesh& g, const Eigen::VectorXd& u, MaterialPoint& p) {
-      updateDomain(g, u, DomainUpdate::Corner, p);              // the program's hook
-    });
+    struct Corner : UpdateDomain {                              // the program's hook
+      void updateDomain(const Mesh& g, const Eigen::VectorXd& u, MaterialPoint& p) const override {
+        ample::updateDomain(g, u, DomainUpdate::Corner, p);
+      }
+    };
+    updateMPs(mesh, uvw, mpData, Corner());
     CHECK((mpData[0].lp - lExpected).norm() <= tolOK);
   }
 }

@@ -2,7 +2,7 @@
 // The points are made by hand on a single 1 m cell (nodes 0-3, basis values,
 // F), so only updateMPs itself is exercised; domains use the default
 // DomainUpdate::Uii (eq 34). The other domain updates: tests/test_updateDomain.cpp.
-#include "ample/meshes/formCoord2D.h"
+#include "setups/formCoord2D.h"
 #include "ample/stiffness/tensorOps.h"
 #include "ample/updateMPs.h"
 #include <doctest/doctest.h>

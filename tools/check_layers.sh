@@ -3,21 +3,23 @@
 #
 # Layers, bottom to top; a file may include files of its own layer or below:
 #   0 data          ample/mpData.h ample/errors.h ample/analysis.h
-#                   ample/boundaries/boundary.h
 #   0 constitutive  constitutive/*  (Eigen and the standard library only; exercise.h, the
 #                   student copy's error, lives here so that nothing of ample/ is needed)
-#   1 pieces        ample/meshes/* ample/stiffness/*
+#   1 pieces        ample/stiffness/*
 #   2 parts         ample/basis/*
 #   3 core          ample/*.h ample/*.cpp (the loop, its hooks and the functions it calls:
 #                   elemMPinfo, detExtForce, detFDoFs, linSolve, detMPs, updateMPs)
-#   4 extensions    ample/solver/* ample/remedies/* ample/boundaries/* ample/fast/*
-#                   ample/domains/* ample/locking/* ample/initial/* ample/formulations/* (they may
-#                   include the core, never the other way; ample/fast/, a core function
-#                   replaced as a whole for large runs, is included by ample/program/* only,
-#                   which chooses it)
-#   5 setups        setups/*
-#   6 output        plotting/*
-#   7 program       ample/program/* (the command line, the run and its hooks)
+#   4 extensions    the rooms ample/solver/ remedies/ boundaries/ fast/ domains/ locking/
+#                   initial/ cpdi/ meshes/ formulations/ (each with a README.md; they may include the
+#                   core and each other, never the core them: a core file, layers 0-3, that
+#                   includes a room is named; ample/fast/, a core function replaced as a
+#                   whole for large runs, is included by setups/program/* only, which
+#                   chooses it)
+#   5 output        plotting/*  (postPro and the VTK writers; the scripts that draw a run)
+#   6 setups        setups/*
+#   7 program       setups/program/* (the command line, the run and its hooks, its output files)
+# so that between the top-level folders every include runs one way: constitutive/ <- ample/
+# <- plotting/ <- setups/ (whose program/ joins them)
 # and no two modules (a .h/.cpp pair) include each other, directly or round a
 # cycle (checked with tsort over the module graph). Prints every offending
 # include; exit 0 when there is none, 1 otherwise.
@@ -27,15 +29,16 @@ cd "$(dirname "$0")/.."
 
 layer() {  # layer of a project file, -1 for one outside the layered tree
   case "$1" in
-    ample/mpData.h|ample/errors.h|ample/analysis.h|ample/boundaries/boundary.h|constitutive/*) echo 0 ;;
-    ample/meshes/*|ample/stiffness/*) echo 1 ;;
+    ample/mpData.h|ample/errors.h|ample/analysis.h|constitutive/*) echo 0 ;;
+    ample/stiffness/*) echo 1 ;;
     ample/basis/*) echo 2 ;;
-    ample/solver/*|ample/remedies/*|ample/boundaries/*|ample/fast/*|ample/domains/*|ample/locking/*|ample/initial/*|ample/formulations/*) echo 4 ;;
-    ample/program/*) echo 7 ;;
+    ample/solver/*|ample/remedies/*|ample/boundaries/*|ample/fast/*|ample/domains/*|ample/locking/*|\
+    ample/initial/*|ample/cpdi/*|ample/meshes/*|ample/formulations/*) echo 4 ;;
+    setups/program/*) echo 7 ;;
     ample/*/*) echo -1 ;;   # a folder of ample/ without a layer
     ample/*) echo 3 ;;
-    setups/*) echo 5 ;;
-    plotting/*) echo 6 ;;
+    setups/*) echo 6 ;;
+    plotting/*) echo 5 ;;
     *) echo -1 ;;
   esac
 }
@@ -43,7 +46,7 @@ layer() {  # layer of a project file, -1 for one outside the layered tree
 bad=0
 edges=$(mktemp)
 trap 'rm -f "$edges"' EXIT
-for f in ample/* ample/*/* constitutive/* setups/* plotting/*; do
+for f in ample/* ample/*/* constitutive/* setups/* setups/*/* plotting/*; do
   case "$f" in *.h|*.cpp) ;; *) continue ;; esac
   lf=$(layer "$f")
   while IFS= read -r inc; do
@@ -53,11 +56,13 @@ for f in ample/* ample/*/* constitutive/* setups/* plotting/*; do
     t=$(realpath --relative-to=. "$t")
     lt=$(layer "$t")
     if [ "$lt" -lt 0 ]; then echo "$f includes $inc, which is not in the tree"; bad=1; continue; fi
-    if [ "$lt" -gt "$lf" ]; then
+    if [ "$lf" -le 3 ] && [ "$lt" -eq 4 ]; then
+      echo "$f (the core, layer $lf) includes $t: the core includes no extension (layer 4)"; bad=1
+    elif [ "$lt" -gt "$lf" ]; then
       echo "$f (layer $lf) includes $t (layer $lt): an include up a layer"; bad=1
     fi
     case "$t" in ample/fast/*)   # an extension: only the program (and its own room) chooses it
-      case "$f" in ample/fast/*|ample/program/*) ;; *) echo "$f includes $t: the core includes no extension (ample/fast/ is chosen by ample/program/)"; bad=1 ;; esac
+      case "$f" in ample/fast/*|setups/program/*) ;; *) echo "$f includes $t: the core includes no extension (ample/fast/ is chosen by setups/program/)"; bad=1 ;; esac
     esac
     case "$f" in constitutive/*)
       case "$t" in constitutive/*) ;; *) echo "$f includes $t: constitutive/ must stand alone"; bad=1 ;; esac

@@ -8,7 +8,7 @@
 #   build/coverage/ample SETUP [name=value ...] --vtk 0 --quiet --out build/coverage/output
 # (the folder removed first, so that the run writes into a new one) and reads the counts with the gcov that matches g++ (gcov-N for g++ N;
 # --json-format). Prints a short table:
-#   - per file of ample/ (ample/program/ aside, the command line) and
+#   - per file of ample/ (setups/program/ aside, the command line) and
 #     constitutive/, headers too: the source lines executed (a line counts once
 #     when its execution count is > 0, however many blocks or template copies
 #     it has) and the lines that hold code, then the total of both folders and
@@ -119,7 +119,7 @@ for f in os.listdir(gdir):
                   os.path.join(gdir, full[len(root) + 1:].replace("/", "#") + ".gcov"))
 
 def counted(rel):
-    return (rel.startswith("ample/") and not rel.startswith("ample/program/")) or \
+    return (rel.startswith("ample/") and not rel.startswith("setups/program/")) or \
         rel.startswith("constitutive/")
 
 def tally(files):
@@ -132,7 +132,7 @@ def pct(a, b):
     return "%5.1f%%" % (100.0 * a / b) if b else "     -"
 
 print("run: %s (%s)" % (os.environ["RUN"], os.environ["NOTE"]))
-print("lines executed (count > 0) / lines with code, per file of ample/ (less ample/program/) and constitutive/")
+print("lines executed (count > 0) / lines with code, per file of ample/ (less setups/program/) and constitutive/")
 core = sorted(f for f in lines if counted(f) and lines[f])   # files with code (not ample.h)
 w = max(len(f) for f in core)
 print("  %-*s %8s %6s %7s" % (w, "file", "executed", "code", ""))
@@ -141,9 +141,9 @@ for f in core:
     print("  %-*s %8d %6d %7s" % (w, f, run, code, pct(run, code)))
 run, code, entered = tally(core)
 print("  %-*s %8d %6d %7s" % (w, "total", run, code, pct(run, code)))
-print("files entered: %d of %d (ample/ less ample/program/, constitutive/)" % (entered, len(core)))
+print("files entered: %d of %d (ample/ less setups/program/, constitutive/)" % (entered, len(core)))
 print("outside the count:")
-for name in ("plotting/", "setups/", "ample/program/"):
+for name in ("plotting/", "setups/", "setups/program/"):
     fs = [f for f in lines if f.startswith(name) and lines[f]]
     run, code, entered = tally(fs)
     print("  %-14s %6d of %6d lines %7s, %d of %d files entered" %

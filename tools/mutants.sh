@@ -34,9 +34,9 @@ MUTANTS=(
   "vtk-vm-no-2|plotting/makeVtkMP.cpp|s/\+ 2 \* mp\.sig\.tail<3>\(\)/+ mp.sig.tail<3>()/"
   "vtk-szz-sxy-swap|plotting/makeVtkMP.cpp|s/\"sigma_zz\", \"sigma_xy\"/\"sigma_xy\", \"sigma_zz\"/"
   "restore-kirchhoff|ample/remedies/loadSteps.cpp|s/\.Ksig \/ mp\.Fn\.determinant\(\)/.Ksig/"
-  "shear-nu-default|setups/shear.cpp|s/setDefault\(P, \"nu\", 0\.3\)/setDefault(P, \"nu\", 0.25)/"
-  "stretch-E-default|setups/stretch.cpp|s/setDefault\(P, \"E\", 1000\)/setDefault(P, \"E\", 1100)/"
-  "cli-unknown-unnamed|ample/program/cli.cpp|s/\"unknown parameter '\" \+ name \+ \"' for setup '\"/std::string(\"unknown parameter for setup '\")/"
+  "shear-nu-default|setups/shear.cpp|s/^    nu = 0\.3;/    nu = 0.25;/"
+  "stretch-E-default|setups/stretch.cpp|s/^    E = 1000;/    E = 1100;/"
+  "cli-unknown-unnamed|setups/program/cli.cpp|s/\"unknown parameter '\" \+ name \+ \"' for setup '\"/std::string(\"unknown parameter for setup '\")/"
   # a handful of others
   "body-force-sign|ample/detExtForce.cpp|s/Vector2d\(0\.0, -g\)/Vector2d(0.0, g)/"
   "vmconst-rho-no-2|constitutive/VMconst.cpp|s/\+ 2\.0 \* s\.tail<3>\(\)/+ s.tail<3>()/"

@@ -4,7 +4,6 @@
 // See elemForMP.h for the rule, inputs and outputs.
 //--------------------------------------------------------------------------
 #include "elemForMP.h"
-#include "ample/meshes/cellSearch.h"
 #include "ample/errors.h"
 #include <algorithm>
 #include <cmath>
@@ -63,17 +62,6 @@ int elemForMP(const Mesh& mesh, const Vector2d& mpC, const Vector2d& lp,
   for (int j = first[1]; j <= last[1]; ++j)
     for (int i = first[0]; i <= last[0]; ++i) eIN[ne++] = j * mesh.nelsx + i;
   return ne;
-}
-
-// a general mesh: the cell that holds the point (cellSearch); a domain needs the grid
-int meshElemForMP(const Mesh& mesh, const Vector2d& mpC, const Vector2d& lp,
-                  std::array<int, MAXE>& eIN) {
-  if (lp(0) > 0.0 || lp(1) > 0.0)
-    throw InputError(std::string("mpType=2 (GIMP) needs the regular grid: its domains are squares "
-                                 "of grid cells; the background mesh is a ") + meshName(mesh) +
-                     " (use mpType=1 MPM, 3 CPDI1 or 4 CPDI2)");
-  eIN[0] = cellOf(mesh, mpC);
-  return 1;
 }
 
 }  // namespace ample

@@ -9,10 +9,8 @@
 // cell to the left/below), the same intervals as SvpMPM (eq 23).
 // The grid is regular, so the cells follow from the spacing without a search.
 // A domain reaching past the grid edge uses the cells inside the grid only.
-// meshElemForMP, the same on a general mesh (docs/meshes.md): the one cell that
-// holds the point (cellOf, tests/test_mesh.cpp); a point with a domain (lp > 0,
-// GIMP) gets an InputError. elemMPinfo calls one or the other.
-// Inputs:  mesh (nelsx, nelsy, h, origin | general: search) · mpC (2) · lp (2)
+// (A general mesh: meshElemForMP, ample/meshes/elemMPinfoMesh.h.)
+// Inputs:  mesh (nelsx, nelsy, h, origin) · mpC (2) · lp (2)
 // Outputs: eIN (cells, ascending) · ne (their number); throws RunError if the
 //          point itself is outside the grid or its domain overlaps more than
 //          3 x 3 cells
@@ -24,8 +22,6 @@
 namespace ample {
 
 int elemForMP(const Mesh& mesh, const Vector2d& mpC, const Vector2d& lp,
-              std::array<int, MAXE>& eIN);      // the regular grid
-int meshElemForMP(const Mesh& mesh, const Vector2d& mpC, const Vector2d& lp,
-                  std::array<int, MAXE>& eIN);  // a general mesh
+              std::array<int, MAXE>& eIN);
 
 }  // namespace ample

@@ -8,14 +8,17 @@
 // distance of [Boundaries] eq 16, is positive in the solid; n is the inward unit
 // normal (into the solid, the paper's n-axis of fig 3 and eq 25), t = n turned
 // by +90 degrees, so that T = [n^T; t^T] is the rotation of eq 25.
-// Data only: the bottom layer with mpData.h and analysis.h (docs/structure.md).
+// A setup's boundaries are held in its Analysis, opaque to the core (Analysis::
+// boundaries, a std::any): boundariesOf(an) is the list, empty when there is none;
+// editBoundaries(an) the same to change, made empty on first use (addBoundary).
 // Functions: dirichletBand (eq 16), cutCells; setups/setupHelpers (addBoundary,
 //            fillPolygon). Page: docs/implicitBoundaries.md
 // Tests:   tests/test_boundary.cpp
 //--------------------------------------------------------------------------
 #pragma once
-#include "ample/mpData.h"
+#include "ample/analysis.h"
 #include <algorithm>
+#include <any>
 #include <vector>
 
 namespace ample {
@@ -69,6 +72,16 @@ inline Vector2d stiffnessNormal(const Boundary& b, int s, double r) {
 // point of segment s at the parameter r in [0, 1]: x_s + r (x_s+1 - x_s)
 inline Vector2d pointAt(const Boundary& b, int s, double r) {
   return b.x[s] + r * (b.x[s + 1] - b.x[s]);
+}
+// the implicit boundaries of an analysis (Analysis::boundaries)
+inline const std::vector<Boundary>& boundariesOf(const Analysis& an) {
+  static const std::vector<Boundary> none;
+  const auto* list = std::any_cast<std::vector<Boundary>>(&an.boundaries);
+  return list ? *list : none;
+}
+inline std::vector<Boundary>& editBoundaries(Analysis& an) {  // made empty on first use
+  if (!an.boundaries.has_value()) an.boundaries = std::vector<Boundary>();
+  return std::any_cast<std::vector<Boundary>&>(an.boundaries);
 }
 // prescribed displacement increment of load step lstp (1-based); zero if none given
 inline Vector2d duAt(const Boundary& b, int lstp) {

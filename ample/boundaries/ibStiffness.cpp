@@ -94,7 +94,7 @@ ImplicitBoundaries ibStiffness(const Mesh& mesh, const std::vector<Boundary>& bo
   if (boundaries.empty()) return ib;
   std::vector<Vector3d> cst(mesh.nels(), Vector3d::Zero());       // sum of E, nu; count
   for (const MaterialPoint& mp : mpData)
-    for (int e = 0; e < mp.ne; ++e) cst[mp.eIN[e]] += Vector3d(mp.mCst(0), mp.mCst(1), 1.0);
+    for (int e = 0; e < mp.ne; ++e) cst[mp.eIN[e]] += Vector3d(mp.mCst.E, mp.mCst.nu, 1.0);
   std::vector<Eigen::Triplet<double>> trip;
   ib.f = Eigen::VectorXd::Zero(mesh.nDoF());
   for (size_t bi = 0; bi < boundaries.size(); ++bi) {

@@ -4,8 +4,8 @@
 // [Lagrangian] eqs 32-39, [CPDI] sec 2 (vii). See updateDomain.h.
 //--------------------------------------------------------------------------
 #include "updateDomain.h"
-#include "ample/basis/MPMbasis.h"
-#include "ample/basis/domainCorners.h"
+#include "ample/cpdi/cornerBasis.h"
+#include "ample/cpdi/domainCorners.h"
 #include "ample/stiffness/tensorOps.h"
 #include "ample/updateMPs.h"
 #include <cmath>

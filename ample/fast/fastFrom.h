@@ -1,7 +1,7 @@
 //--------------------------------------------------------------------------
 // fastFrom — the size of run from which the program's fast loops take over
 //--------------------------------------------------------------------------
-// In an optimised build the program (ample/program/run.cpp) hands runs of
+// In an optimised build the program (setups/program/run.cpp) hands runs of
 // fastFrom() points or more to elemMPinfoFast and detMPsFast, chosen once per
 // run by the number of points only, never by the number of threads (those
 // follow pointsPerThread(), pointShares.h); a Debug build (the debugger's

@@ -50,9 +50,9 @@ static void checkYield(const Analysis& an, const std::vector<double>& depth) {
     if (mp.cmType != CmType::VonMises) continue;
     const double sv = mp.mpM / mp.vp0 * an.g * depth[p];   // |sigma_yy|
     if (sv <= 0) continue;
-    const double limit = mp.mCst(2) / (c * sv);
+    const double limit = mp.mCst.rhoY / (c * sv);
     if (limit < m) m = limit, worst = int(p);
-    if (c * std::abs(1 - an.K0) * sv > mp.mCst(2)) ++beyond;
+    if (c * std::abs(1 - an.K0) * sv > mp.mCst.rhoY) ++beyond;
   }
   if (beyond == 0) return;
   const MaterialPoint& w = an.mpData[worst];
@@ -60,7 +60,7 @@ static void checkYield(const Analysis& an, const std::vector<double>& depth) {
   std::snprintf(msg, sizeof msg, "K0=%g puts the initial stress of %d von Mises points beyond yield (rho = "
                 "sqrt(2/3) |1 - K0| rho g d > rho_y; the first to yield at (%g, %g), depth %g m, rho_y = %g Pa): "
                 "K0 must lie in [%.4g, %.4g] for this body (allowed [0, 10]), or use cmType=elastic",
-                an.K0, beyond, w.mpC(0), w.mpC(1), depth[worst], w.mCst(2), std::max(0.0, 1 - m),
+                an.K0, beyond, w.mpC(0), w.mpC(1), depth[worst], w.mCst.rhoY, std::max(0.0, 1 - m),
                 std::min(10.0, 1 + m));
   throw InputError(msg);
 }
@@ -81,7 +81,7 @@ void applyGeostatic(Analysis& an) {
     Vector6d sigma = Vector6d::Zero();
     sigma << an.K0 * sv, sv, an.K0 * sv, 0, 0, 0;
     mp.sig = sigma;                                          // F = I: Cauchy = Kirchhoff
-    mp.epsE = mp.epsEn = elasticStrainOf(sigma, mp.mCst(0), mp.mCst(1));
+    mp.epsE = mp.epsEn = elasticStrainOf(sigma, mp.mCst.E, mp.mCst.nu);
   }
 }
 

@@ -20,7 +20,7 @@
 // = sqrt(2/3) |1 - K0| |sigma_yy| > rho_y, is refused (InputError naming K0 and
 // the K0 this body allows, [1 - m, 1 + m] with m = min rho_y / (sqrt(2/3) |sigma_yy|)).
 // The load steps then carry the full weight from load step 1 (selfWeight, added
-// by the run's stepTerms hook, ample/program/run.cpp): gravity is not ramped.
+// by the run's stepTerms hook, setups/program/run.cpp): gravity is not ramped.
 // Inputs:  an (mesh: the regular grid; mpData: positions, domains, mass, mCst, cmType;
 //          g; geostatic; K0)
 // Outputs: an.mpData's sig, epsE, epsEn · selfWeight: the nodal weight

@@ -26,8 +26,7 @@ static void attempt(Analysis& an, const Increment& inc, const Hooks& hooks) {
   try {
     loadStep(an, inc, hooks);
   } catch (const RunError& e) {
-    if (!hooks.failedStep) throw;
-    hooks.failedStep(an, inc, e, hooks);
+    hooks.failedStep(an, inc, e);                                 // (Hooks: rethrows e)
   }
 }
 

@@ -4,8 +4,8 @@
 // See loneNodes.h for the rules, inputs and outputs.
 //--------------------------------------------------------------------------
 #include "loneNodes.h"
-#include "ample/basis/MPMbasis.h"
-#include "ample/basis/domainCorners.h"
+#include "ample/cpdi/cornerBasis.h"
+#include "ample/cpdi/domainCorners.h"
 #include <algorithm>
 #include <array>
 #include <cmath>

@@ -148,10 +148,15 @@ static Eigen::VectorXd factorisedSolve(FreeSystem& S, const Eigen::VectorXd& rhs
 
 LinSolveOut chosenSolve(FreeSystem& S, const std::vector<BC>& bc, const SpMat& Kt, const Eigen::VectorXd& oobf,
                         int NRit, const std::vector<int>& fd) {
-  return linSolve(bc, Kt, oobf, NRit, fd, [&S](const SpMat& K, const std::vector<int>& f,
-                                               const Eigen::VectorXd& rhs, int pass) {
-    return chosenSolveFree(S, K, f, rhs, pass);
-  });
+  struct Chosen : FreeSolve {                            // linSolve's Kt(fd,fd) \ rhs by S's solver
+    FreeSystem& S;
+    explicit Chosen(FreeSystem& s) : S(s) {}
+    Eigen::VectorXd solveFree(const SpMat& K, const std::vector<int>& f, const Eigen::VectorXd& rhs,
+                              int pass) const override {
+      return chosenSolveFree(S, K, f, rhs, pass);
+    }
+  };
+  return linSolve(bc, Kt, oobf, NRit, fd, Chosen(S));
 }
 
 Eigen::VectorXd chosenSolveFree(FreeSystem& S, const SpMat& Kt, const std::vector<int>& fd, const Eigen::VectorXd& rhs,

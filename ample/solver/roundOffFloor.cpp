@@ -22,7 +22,7 @@ double roundOffFloor(const std::vector<MaterialPoint>& mpData, const Eigen::Vect
         for (int v = 0; v < mp.nn; ++v) terms += std::abs(uvw(dof(mp.nIN[v], i)) * mp.dSvp(j, v));
         s = std::max(s, terms);
       }
-    const double E = mp.mCst(0), nu = mp.mCst(1);              // step 2: the stress
+    const double E = mp.mCst.E, nu = mp.mCst.nu;              // step 2: the stress
     const double M = E * (1 - nu) / ((1 + nu) * (1 - 2 * nu));
     const double dsig = M * (s + 1.0) + mp.sig.cwiseAbs().maxCoeff();
     for (int v = 0; v < mp.nn; ++v) {                          // step 3: the nodal forces

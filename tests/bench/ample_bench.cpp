@@ -32,7 +32,7 @@
 // Usage:   ample_bench [suite ...] [--out DIR] [--quick] [--only ARG]
 // Outputs: DIR/<suite>.csv (default docs/results); plots: plotting/plot_results.py
 //--------------------------------------------------------------------------
-#include "ample/program/cli.h"
+#include "setups/program/cli.h"
 #include "ample/solver/solverChoice.h"
 #include <algorithm>
 #include <cstdio>

@@ -30,7 +30,7 @@
 //          SuiteSparse cases, with a last column ordering_chosen)
 // Build:   cmake --build --preset release --target solver_bench
 //--------------------------------------------------------------------------
-#include "ample/program/cli.h"
+#include "setups/program/cli.h"
 #include "ample/detFDoFs.h"
 #include "ample/remedies/loneNodes.h"
 #include "ample/detMPs.h"
@@ -167,7 +167,7 @@ SpMat collapseKff(int a, int mp, int after, long& nmp) {
   }
   nmp = long(an.mpData.size());
   const int nDoF = an.mesh.nDoF();
-  elemMPinfo(an.mesh, an.mpData, an.fem);
+  elemMPinfo(an.mesh, an.mpData);
   const std::vector<int> fd = detFDoFsLone(an.mesh, an.mpData);
   DetMPsOut mps;
   mps.Kt = stiffnessPattern(nDoF, an.mpData);

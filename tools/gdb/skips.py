@@ -12,7 +12,9 @@
 #   - any function whose name begins with std::, Eigen:: or __ (skip -rfu):
 #     instances of their templates in our own files, and the C library's math
 #     (exp, log: __GI___exp, __log, ... whose lines gdb shows when the
-#     package libc6-dbg is installed; __gnu_cxx:: too).
+#     package libc6-dbg is installed; __gnu_cxx:: too);
+#   - the program's timers (ample::Stopwatch, ample::ScopedTimer, setups/program/runLog.h),
+#     which each of the program's hooks starts before it calls its core function.
 # Functions without line information (libc without libc6-dbg, libstdc++.so)
 # are passed over as gdb always does. A function of ours called only from
 # skipped code (a lambda handed to std::sort or a std::function) is passed
@@ -23,7 +25,7 @@
 import gdb
 
 SKIP_FILES = ["/usr/include" + "/*" * depth for depth in range(1, 9)]
-SKIP_FUNCTIONS = [r"^std::", r"^Eigen::", r"^__"]
+SKIP_FUNCTIONS = [r"^std::", r"^Eigen::", r"^__", r"^ample::Stopwatch::", r"^ample::ScopedTimer::"]
 
 for pattern in SKIP_FILES:
     gdb.execute("skip -gfile %s" % pattern, to_string=True)

@@ -16,7 +16,7 @@
 // Tests:   tests/test_cli.cpp
 //--------------------------------------------------------------------------
 #pragma once
-#include "ample/program/run.h"
+#include "setups/program/run.h"
 #include <string>
 #include <vector>
 
@@ -27,7 +27,7 @@ enum class CliMode { List, Help, SetupHelp, Run };
 struct CliRequest {
   CliMode mode = CliMode::Help;
   const Setup* setup = nullptr;
-  Params params;        // the setup's parameters with the command line applied
+  Params params;        // the setup's parameters (its struct) with the command line applied
   RunOptions options;
 };
 

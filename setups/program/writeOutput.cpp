@@ -5,7 +5,7 @@
 //--------------------------------------------------------------------------
 #include "writeOutput.h"
 #include "ample/errors.h"
-#include "makeVtk.h"
+#include "plotting/makeVtk.h"
 #include <algorithm>
 #include <cerrno>
 #include <cmath>
@@ -221,7 +221,7 @@ static std::string summaryJson(const Setup& setup, const Params& P, const Analys
   std::ostringstream s;
   s.precision(17);
   s << "{\n  \"setup\": " << jsonString(setup.name) << ",\n  \"parameters\": {";
-  for (size_t i = 0; i < P.size(); ++i) s << (i ? ", " : "") << jsonString(P[i].name) << ": " << jsonNumber(P[i].value);
+  for (size_t i = 0; i < P.size(); ++i) s << (i ? ", " : "") << jsonString(P[i].name) << ": " << jsonNumber(P[i].value());
   s << "},\n  \"nmp\": " << an.mpData.size() << ",\n  \"nodes\": " << an.mesh.nodes()
     << ",\n  \"nDoF\": " << an.mesh.nDoF() << ",\n  \"lstps\": " << an.lstps
     << ",\n  \"total_NR_iterations\": " << log.totalNRit

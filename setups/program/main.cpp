@@ -16,21 +16,12 @@
 #endif
 #include <iostream>
 
-static int run(int argc, char** argv);
-
 int main(int argc, char** argv) {
-#ifdef AMPLE_HAVE_PETSC
-  ample::petscStart();      // under mpirun: ranks 1.. serve solver=PETSC's solves and end there
-  const int status = run(argc, argv);
-  ample::petscEnd();
-  return status;
-#else
-  return run(argc, argv);
-#endif
-}
-
-static int run(int argc, char** argv) {
   using namespace ample;
+#ifdef AMPLE_HAVE_PETSC
+  petscStart();             // under mpirun: ranks 1.. serve solver=PETSC's solves and end there
+  struct PetscEnd { ~PetscEnd() { petscEnd(); } } end;
+#endif
   CliRequest req;
   try {
     req = parseArgs(std::vector<std::string>(argv + 1, argv + argc));

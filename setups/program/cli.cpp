@@ -92,8 +92,9 @@ static double valueOf(const Param& p, const std::string& text) {
   return parseNumber(p.name, text);
 }
 
-static void setParam(Params& P, const std::string& name, const std::string& text,
-                     const Setup& setup) {
+// name=text: the member of the parameter `name` set to the value of text, once checked
+static void setFromText(Params& P, const std::string& name, const std::string& text,
+                        const Setup& setup) {
   for (Param& p : P) {
     if (p.name != name) continue;
     const double v = valueOf(p, text);
@@ -101,7 +102,7 @@ static void setParam(Params& P, const std::string& name, const std::string& text
     if (!inRange)
       throw InputError("parameter '" + name + "' = " + text + " is out of range: allowed " +
                        rangeText(p) + " (" + p.helpText + ")");
-    p.value = v;
+    p.set(v);
     return;
   }
   std::string names;
@@ -178,7 +179,7 @@ static void readParam(CliRequest& req, const std::string& a, std::map<std::strin
   if (!earlier.second)
     throw InputError("parameter '" + name + "' is given twice (" + name + "=" + earlier.first->second +
                      ", then " + a + "); give it once");
-  setParam(req.params, name, text, *req.setup);
+  setFromText(req.params, name, text, *req.setup);
 }
 
 CliRequest parseArgs(const std::vector<std::string>& args) {
@@ -241,7 +242,7 @@ std::string setupHelpText(const Setup& setup) {
   std::ostringstream s;
   s << setup.name << ": " << setup.description << "\nparameters (name=value):\n";
   for (const Param& p : setup.params())
-    s << "  " << p.name << " = " << p.value << "\t" << p.helpText << "; " << rangeText(p) << "\n";
+    s << "  " << p.name << " = " << p.value() << "\t" << p.helpText << "; " << rangeText(p) << "\n";
   s << "solver= choices this build has: " << solversBuilt() << "\n";
   return s.str();
 }

@@ -1,10 +1,12 @@
 //--------------------------------------------------------------------------
 // run — one run of a setup: setupGrid, the hooks it needs, solve, the output
 //--------------------------------------------------------------------------
-// runHooks connects the extensions to solve()'s hooks (ample/hooks.h), each
+// RunHooks connects the extensions to solve()'s hooks (ample/hooks.h), each
 // only where the analysis asks for it:
 //   startStep    progress line, step clock, the setup's beforeStep
-//   elemMPinfo   elemMPinfoFast for large runs (opt.basisLoop; not in a Debug build), timed
+//   elemMPinfo   elemMPinfoCPDI with CPDI points (cpdi/), elemMPinfoMesh on a general mesh
+//                (meshes/), elemMPinfoFast for large runs (opt.basisLoop; not in a Debug
+//                build), timed
 //   stepTerms    the weight in full from step 1 (geostatic=on: initial/geostatic.h),
 //                the body force (detBodyForce), the ghost penalty of the step
 //                (remedies/ghostPenalty.h), the implicit boundaries' K and f
@@ -30,6 +32,7 @@
 //--------------------------------------------------------------------------
 #include "run.h"
 #include "ample/boundaries/ibStiffness.h"
+#include "ample/cpdi/elemMPinfoCPDI.h"
 #include "ample/detExtForce.h"
 #include "ample/domains/updateDomain.h"
 #include "ample/errors.h"
@@ -38,6 +41,7 @@
 #include "ample/initial/geostatic.h"
 #include "ample/locking/detMPsFbar.h"
 #include "ample/meshes/cellSearch.h"
+#include "ample/meshes/elemMPinfoMesh.h"
 #include "ample/remedies/ghostPenalty.h"
 #include "ample/remedies/loadSteps.h"
 #include "ample/remedies/loneNodes.h"
@@ -46,7 +50,7 @@
 #include "ample/solver/roundOffFloor.h"
 #include "ample/updateMPs.h"
 #include "plotting/postPro.h"
-#include "plotting/writeOutput.h"
+#include "writeOutput.h"
 #include <algorithm>
 #include <cfloat>
 #include <cmath>
@@ -69,7 +73,6 @@ struct RunState {
 struct LastStepDone {};            // opt.lastStep reached (solveRun stops there)
 
 // helpers of this page (defined below it): bookkeeping, not algorithm
-static Hooks runHooks(Analysis& an, RunLog& log, const RunOptions& opt, RunState& x);
 static void checkAnalysis(const Analysis& an);
 static std::string looseTolWarning(const Analysis& an);
 static int lstpsMax(const Params& P);
@@ -82,6 +85,115 @@ static void explainFailure(const Analysis& an, RunLog& log, int lstp, int NRit, 
 static void recordStep(RunLog& log, const Increment& inc, int NRit, double fErr, FreeSystem& Kff,
                        bool converged);
 static void checkNotInverted(const std::vector<MaterialPoint>& mpData, int lstp, double fErr);
+
+// the hooks of this run (the list at the top of the page): each chosen once, in the
+// constructor; a hook times its core function with a ScopedTimer (runLog.h) and calls it
+struct RunHooks : Hooks {
+  Analysis& an;
+  RunLog& log;
+  Timers& T;
+  const RunOptions& opt;
+  RunState& x;
+  BasisLoop basisLoop = nullptr;                 // the core's elemMPinfo, or CPDI's, a general mesh's,
+                                                 // the fast one of large runs
+  PointLoop pointLoop = ample::detMPs;           // the core's point loop, or the fast one
+  bool chosen = false;                           // solver= (or a large run): the chosen solver
+  bool cpdi = false;                             // CPDI points: their domain update
+
+  RunHooks(Analysis& a, RunLog& l, const RunOptions& o, RunState& s) : an(a), log(l), T(l.t), opt(o), x(s) {
+#ifdef NDEBUG
+    const bool large = an.mpData.size() >= size_t(fastFrom());     // chosen once, for the run
+#else
+    const bool large = false;      // a Debug build, to step through: the core's loops at every size
+#endif
+    cpdi = std::any_of(an.mpData.begin(), an.mpData.end(), [](const MaterialPoint& mp) { return isCPDI(mp); });
+    if (cpdi) basisLoop = elemMPinfoCPDI;                            // CPDI points (cpdi/), on either mesh
+    else if (!an.mesh.regular()) basisLoop = elemMPinfoMesh;         // a general mesh (meshes/)
+    if (large && opt.basisLoop) basisLoop = opt.basisLoop;           // each of them, faster
+    pointLoop = large ? opt.pointLoop : pointLoopOf(an.formulation);  // UL: detMPs (PC, SS: formulations/)
+    x.Kff.choice = an.solver;                                        // SparseLU, or LDLT if symmetric
+    chosen = large || an.solver != LinearSolver::LU;
+  }
+  bool program() const override { return true; }
+
+  void startStep(Analysis& a, const Increment& inc) const override {
+    ample::startStep(a, inc.lstp, log, opt.quiet);
+  }
+  void elemMPinfo(Mesh& mesh, std::vector<MaterialPoint>& mpData, bool keepCells) const override {
+    ScopedTimer timer{T.elemMPinfo, Stopwatch()};
+    basisLoop ? basisLoop(mesh, mpData, keepCells) : ample::elemMPinfo(mesh, mpData);
+    x.gap.lap();                                                     // detExtForce from here
+  }
+  void stepTerms(Analysis& a, const Increment& inc, Eigen::VectorXd& fext) const override {
+    T.detExtForce += x.gap.lap();
+    if (a.geostatic) fext += timed(T.detExtForce, selfWeight, int(fext.size()), a.g, a.mpData) * (1.0 - inc.lf1);
+    if (a.bodyForce) fext += timed(T.detExtForce, detBodyForce, int(fext.size()), a.bodyForce, inc.lf1, a.mpData);
+    x.Kgp = ghostPenaltyOf(a);                                       // remedy (off: empty)
+    if (a.boundaries.has_value())                                    // [Boundaries]: K_IB, f_IB
+      x.ib = ibStiffness(a.mesh, boundariesOf(a), a.mpData, inc.lstp, inc.share);
+    x.NRit = 0, x.fErr = 1.0;
+  }
+  std::vector<int> detFDoFs(const Mesh& mesh, const std::vector<MaterialPoint>& mpData) const override {
+    ScopedTimer timer{T.detFDoFs, Stopwatch()};                      // the lone-node rule (remedy): lone=1, or lone=2 once needed
+    return an.lone == 1 || an.loneFrom > 0 ? detFDoFsLone(mesh, mpData, {&x.Kgp, &x.ib.K}) : ample::detFDoFs(mesh, mpData);
+  }
+  Eigen::VectorXd solveFree(const SpMat& Kt, const std::vector<int>& fd, const Eigen::VectorXd& rhs,
+                            int NRit) const override {
+    ScopedTimer timer{T.linSolve, Stopwatch()};
+    if (!chosen) x.Kff.builds++, x.Kff.factorisations++;             // SparseLU analyses every pass
+    return chosen ? chosenSolveFree(x.Kff, Kt, fd, rhs, NRit) : ample::solveFree(Kt, fd, rhs, NRit);
+  }
+  void detMPs(const Eigen::VectorXd& uvw, std::vector<MaterialPoint>& mpData, Formulation form,
+              DetMPsOut& mps) const override {
+    ScopedTimer timer{T.detMPs, Stopwatch()};                        // anti-locking: F-bar, B-bar
+    an.locking == Locking::Fbar ? detMPsFbar(an.mesh, uvw, mpData, form, mps) : pointLoop(uvw, mpData, form, mps);
+  }
+  void passTerms(const Eigen::VectorXd& uvw, DetMPsOut& mps, Eigen::VectorXd& fbnd) const override {
+    if (an.ghost == 0 && !an.boundaries.has_value()) return;
+    addGhostPenalty(x.Kgp, uvw, mps.Kt, mps.fint);                   // remedy (off: nothing)
+    fbnd = addImplicitBoundaries(x.ib, uvw, mps.Kt, mps.fint);       // [Boundaries] (none: 0)
+  }
+  void afterPass(const Analysis& a, const Increment& inc, int NRit, double fErr) const override {
+    x.NRit = NRit, x.fErr = fErr;
+    recordPass(log, a.mpData, inc.lstp, NRit, fErr, opt.quiet);     // throws on NaN
+    x.NRit = NRit + 1;
+  }
+  void checkConverged(const Analysis& a, const Increment& inc, int NRit, double fErr,
+                      const Eigen::VectorXd& uvw, const Eigen::VectorXd& load) const override {
+    explainFailure(a, log, inc.lstp, NRit, fErr, uvw, load, opt.acceptFloor);  // fErr > tol: throws
+    checkNotInverted(a.mpData, inc.lstp, fErr);                      // det F <= 0 accepted: throws
+    recordStep(log, inc, NRit, fErr, x.Kff, true);                   // converged: its steps.csv row
+    x.gap.lap();                                                     // updateMPs from here
+  }
+  void updateDomain(const Mesh& mesh, const Eigen::VectorXd& uvw, MaterialPoint& mp) const override {
+    if (cpdi || an.domainUpdate != DomainUpdate::Uii) return ample::updateDomain(mesh, uvw, an.domainUpdate, mp);
+    updateGIMPDomain(mesh, uvw, mp);                                 // [Lagrangian]'s, CPDI's domains above
+  }
+  void afterUpdate(Analysis& a, const Increment& inc, int /*NRit*/, double /*fErr*/) const override {
+    T.updateMPs += x.gap.lap();
+    if (a.fem) moveMesh(a.mesh, a.uvw);                              // FEM: the mesh follows (MPM: reset)
+    if (a.boundaries.has_value()) {                                  // [Boundaries]: forces, motion by du
+      a.ibForce = boundaryForces(x.ib, a.uvw, int(boundariesOf(a).size()));
+      moveBoundaries(editBoundaries(a), inc.lstp, inc.share);
+    }
+    if (a.split > 0) log.splits += splitPoints(a.mesh, a.split, a.mpData, opt.quiet);  // remedy
+  }
+  void failedStep(Analysis& a, const Increment& inc, const RunError& e) const override {
+    if (e.kind == Failure::Other || e.kind == Failure::LeftGrid || e.kind == Failure::DomainTooLarge)
+      throw;                                                         // not the Newton loop's: stop
+    recordStep(log, inc, x.NRit, x.fErr, x.Kff, false);
+    retryStep(a, inc, e, *this, opt.quiet);                          // remedies (off: throws e)
+  }
+  void endStep(Analysis& a, const Increment& inc) const override {
+    if (a.afterStep) a.afterStep(a, inc.lstp, inc.lf1);             // setup's hook
+    timed(T.postPro, postPro, a.mesh, a.mpData, a.uvw, inc.lstp, opt.vtkEvery, opt.outDir, opt.vtkFormat,
+          opt.vtkGridEvery || a.fem || a.gridMoves);
+    log.steps.back().seconds = log.stepClock.lap();
+    log.lastConverged = inc.lstp;
+    appendStepFiles(opt.outDir, a, log);                             // the step's rows, flushed (ample())
+    if (inc.lstp == opt.lastStep) throw LastStepDone();
+  }
+};
 
 int ample(const Setup& setup, const Params& P, const RunOptions& opt) {
   RunLog log;
@@ -102,8 +214,11 @@ int ample(const Setup& setup, const Params& P, const RunOptions& opt) {
               << "ample: output kept up to the last converged load step ("
               << log.lastConverged << ") in " << opt.outDir << "\n";
   };
+  RunState x;
+  const RunHooks hooks(an, log, opt, x);                             // the extensions it asks for
   try {
-    solveRun(an, log, opt);                                          // the loops (ample.cpp)
+    solve(an, hooks);                                                // the loops (ample.cpp)
+  } catch (const LastStepDone&) {                                    // the tests' opt.lastStep
   } catch (const RunError& e) {
     stop(e.what() + whatToTry(e, an, lstpsMax(P)));
   } catch (const std::bad_alloc&) {
@@ -118,111 +233,11 @@ int ample(const Setup& setup, const Params& P, const RunOptions& opt) {
 
 void solveRun(Analysis& an, RunLog& log, const RunOptions& opt) {
   RunState x;
-  const Hooks hooks = runHooks(an, log, opt, x);
+  const RunHooks hooks(an, log, opt, x);
   try {
     solve(an, hooks);
   } catch (const LastStepDone&) {                                    // the tests' opt.lastStep
   }
-}
-
-// the hooks of this run (the list at the top of the page)
-static Hooks runHooks(Analysis& an, RunLog& log, const RunOptions& opt, RunState& x) {
-  Hooks h;
-  Timers& T = log.t;
-#ifdef NDEBUG
-  const bool large = an.mpData.size() >= size_t(fastFrom());         // chosen once, for the run
-#else
-  const bool large = false;        // a Debug build, to step through: the core's loops at every size
-#endif
-  const BasisLoop basisLoop = large ? opt.basisLoop : elemMPinfo;
-  const PointLoop pointLoop = large ? opt.pointLoop : pointLoopOf(an.formulation);  // UL: detMPs
-  x.Kff.choice = an.solver;                                          // SparseLU, or LDLT if symmetric
-  const bool chosen = large || an.solver != LinearSolver::LU;
-  h.startStep = [&log, &opt](Analysis& a, const Increment& inc) { startStep(a, inc.lstp, log, opt.quiet); };
-  h.elemMPinfo = [&T, &x, basisLoop](Mesh& mesh, std::vector<MaterialPoint>& mpData, bool keepCells) {
-    timed(T.elemMPinfo, basisLoop, mesh, mpData, keepCells);
-    x.gap.lap();                                                     // detExtForce from here
-  };
-  h.stepTerms = [&T, &x](Analysis& a, const Increment& inc, Eigen::VectorXd& fext) {
-    T.detExtForce += x.gap.lap();
-    if (a.geostatic) fext += timed(T.detExtForce, selfWeight, int(fext.size()), a.g, a.mpData) * (1.0 - inc.lf1);
-    if (a.bodyForce) fext += timed(T.detExtForce, detBodyForce, int(fext.size()), a.bodyForce, inc.lf1, a.mpData);
-    x.Kgp = ghostPenaltyOf(a);                                       // remedy (off: empty)
-    if (!a.boundaries.empty())                                       // [Boundaries]: K_IB, f_IB
-      x.ib = ibStiffness(a.mesh, a.boundaries, a.mpData, inc.lstp, inc.share);
-    x.NRit = 0, x.fErr = 1.0;
-  };
-  if (an.lone > 0)                                                   // remedy: 1 always, 2 from an.loneFrom
-    h.detFDoFs = [&T, &x, &an](const Mesh& mesh, const std::vector<MaterialPoint>& mpData) {
-      if (an.lone == 2 && an.loneFrom == 0) return timed(T.detFDoFs, detFDoFs, mesh, mpData);
-      return timed(T.detFDoFs, detFDoFsLone, mesh, mpData, StiffnessSources{&x.Kgp, &x.ib.K});
-    };
-  else
-    h.detFDoFs = [&T](const Mesh& mesh, const std::vector<MaterialPoint>& mpData) {
-      return timed(T.detFDoFs, detFDoFs, mesh, mpData);
-    };
-  if (chosen)
-    h.solveFree = [&T, &x](const SpMat& Kt, const std::vector<int>& fd, const Eigen::VectorXd& rhs, int NRit) {
-      return timed(T.linSolve, chosenSolveFree, x.Kff, Kt, fd, rhs, NRit);
-    };
-  else
-    h.solveFree = [&T, &x](const SpMat& Kt, const std::vector<int>& fd, const Eigen::VectorXd& rhs, int NRit) {
-      x.Kff.builds++, x.Kff.factorisations++;                        // SparseLU analyses every pass
-      return timed(T.linSolve, solveFree, Kt, fd, rhs, NRit);
-    };
-  if (an.locking == Locking::Fbar)                                   // anti-locking: F-bar / B-bar
-    h.detMPs = [&T, &an](const Eigen::VectorXd& uvw, std::vector<MaterialPoint>& mpData, Formulation form,
-                         DetMPsOut& mps) { timed(T.detMPs, detMPsFbar, an.mesh, uvw, mpData, form, mps); };
-  else
-    h.detMPs = [&T, pointLoop](const Eigen::VectorXd& uvw, std::vector<MaterialPoint>& mpData, Formulation form,
-                               DetMPsOut& mps) { timed(T.detMPs, pointLoop, uvw, mpData, form, mps); };
-  if (an.ghost > 0 || !an.boundaries.empty())
-    h.passTerms = [&x](const Eigen::VectorXd& uvw, DetMPsOut& mps, Eigen::VectorXd& fbnd) {
-      addGhostPenalty(x.Kgp, uvw, mps.Kt, mps.fint);                 // remedy (off: nothing)
-      fbnd = addImplicitBoundaries(x.ib, uvw, mps.Kt, mps.fint);     // [Boundaries] (none: 0)
-    };
-  h.afterPass = [&log, &x, &opt](const Analysis& a, const Increment& inc, int NRit, double fErr) {
-    x.NRit = NRit, x.fErr = fErr;
-    recordPass(log, a.mpData, inc.lstp, NRit, fErr, opt.quiet);     // throws on NaN
-    x.NRit = NRit + 1;
-  };
-  h.checkConverged = [&log, &x, &opt](const Analysis& a, const Increment& inc, int NRit, double fErr,
-                                      const Eigen::VectorXd& uvw, const Eigen::VectorXd& load) {
-    explainFailure(a, log, inc.lstp, NRit, fErr, uvw, load, opt.acceptFloor);  // fErr > tol: throws
-    checkNotInverted(a.mpData, inc.lstp, fErr);                      // det F <= 0 accepted: throws
-    recordStep(log, inc, NRit, fErr, x.Kff, true);                   // converged: its steps.csv row
-    x.gap.lap();                                                     // updateMPs from here
-  };
-  const bool cpdi = std::any_of(an.mpData.begin(), an.mpData.end(), [](const MaterialPoint& mp) { return isCPDI(mp); });
-  if (cpdi || an.domainUpdate != DomainUpdate::Uii)                  // [Lagrangian]'s, CPDI's domains
-    h.updateDomain = [method = an.domainUpdate](const Mesh& mesh, const Eigen::VectorXd& uvw, MaterialPoint& mp) {
-      updateDomain(mesh, uvw, method, mp);
-    };
-  h.afterUpdate = [&log, &x, &opt, &T](Analysis& a, const Increment& inc, int /*NRit*/, double /*fErr*/) {
-    T.updateMPs += x.gap.lap();
-    if (a.fem) moveMesh(a.mesh, a.uvw);                              // FEM: the mesh follows (MPM: reset)
-    if (!a.boundaries.empty()) {                                     // [Boundaries]: forces, motion by du
-      a.ibForce = boundaryForces(x.ib, a.uvw, int(a.boundaries.size()));
-      moveBoundaries(a.boundaries, inc.lstp, inc.share);
-    }
-    if (a.split > 0) log.splits += splitPoints(a.mesh, a.split, a.mpData, opt.quiet);  // remedy
-  };
-  h.failedStep = [&log, &x, &opt](Analysis& a, const Increment& inc, const RunError& e, const Hooks& hooks) {
-    if (e.kind == Failure::Other || e.kind == Failure::LeftGrid || e.kind == Failure::DomainTooLarge)
-      throw;                                                         // not the Newton loop's: stop
-    recordStep(log, inc, x.NRit, x.fErr, x.Kff, false);
-    retryStep(a, inc, e, hooks, opt.quiet);                          // remedies (off: throws e)
-  };
-  h.endStep = [&log, &opt, &T](Analysis& a, const Increment& inc) {
-    if (a.afterStep) a.afterStep(a, inc.lstp, inc.lf1);             // setup's hook
-    timed(T.postPro, postPro, a.mesh, a.mpData, a.uvw, inc.lstp, opt.vtkEvery, opt.outDir, opt.vtkFormat,
-          opt.vtkGridEvery || a.fem || a.gridMoves);
-    log.steps.back().seconds = log.stepClock.lap();
-    log.lastConverged = inc.lstp;
-    appendStepFiles(opt.outDir, a, log);                             // the step's rows, flushed (ample())
-    if (inc.lstp == opt.lastStep) throw LastStepDone();
-  };
-  return h;
 }
 
 //--------------------------------------------------------------------------
@@ -234,7 +249,7 @@ static Hooks runHooks(Analysis& an, RunLog& log, const RunOptions& opt, RunState
 static void checkGeneralMesh(const Analysis& an) {
   const std::string mesh = std::string("the background mesh is a ") + meshName(an.mesh) +
                            " of " + std::to_string(an.mesh.nels()) + " cells";
-  if (!an.boundaries.empty())
+  if (an.boundaries.has_value())
     throw InputError("implicit boundaries ([Boundaries]) need the regular grid (cutCells); " + mesh);
   if (an.ghost > 0) throw InputError("ghost=" + std::to_string(an.ghost) + ": the ghost penalty "
                                      "needs the regular grid (its faces); " + mesh + "; use ghost=0");
@@ -308,7 +323,7 @@ static void startStep(Analysis& an, int lstp, RunLog& log, bool quiet) {
 static SpMat ghostPenaltyOf(const Analysis& an) {
   if (!(an.ghost > 0) || an.ghostFrom == 0) return SpMat();
   double E = 0.0;                                                 // the stiffest point's E
-  for (const MaterialPoint& mp : an.mpData) E = std::max(E, mp.mCst(0));
+  for (const MaterialPoint& mp : an.mpData) E = std::max(E, mp.mCst.E);
   return ghostPenalty(an.mesh, an.ghost, E);
 }
 

@@ -18,7 +18,7 @@
 #include "ample/fast/detMPsFast.h"
 #include "ample/fast/elemMPinfoFast.h"
 #include "plotting/makeVtkWriter.h"
-#include "plotting/runLog.h"
+#include "runLog.h"
 #include "setups/setups.h"
 #include <string>
 
