@@ -28,7 +28,6 @@ Eigen::VectorXd solveFree(const SpMat& Kt, const std::vector<int>& fd, const Eig
 void checkSolved(const Eigen::VectorXd& residual, const Eigen::VectorXd& rhs);
 // Kt(fd,fd) \ rhs: solveFree (SparseLU) here; the program's hooks (hooks.h) choose another solver
 struct FreeSolve {
-  virtual ~FreeSolve() = default;
   virtual Eigen::VectorXd solveFree(const SpMat& Kt, const std::vector<int>& fd, const Eigen::VectorXd& rhs,
                                     int NRit) const {
     return ample::solveFree(Kt, fd, rhs, NRit);

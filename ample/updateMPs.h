@@ -29,7 +29,6 @@ void updateGIMPDomain(const Mesh& mesh, const Eigen::VectorXd& uvw, MaterialPoin
 // a point's domain at the end of the step: updateGIMPDomain here; the program's hooks
 // (hooks.h) choose another domain update (CPDI, domainUpdate=)
 struct UpdateDomain {
-  virtual ~UpdateDomain() = default;
   virtual void updateDomain(const Mesh& mesh, const Eigen::VectorXd& uvw, MaterialPoint& mp) const {
     updateGIMPDomain(mesh, uvw, mp);
   }

@@ -1,6 +1,5 @@
 // Tests of tensorOps: Voigt <-> tensor round trips, exponential and logarithm
 // of symmetric tensors ([AMPLE] eqs 9-10), and the closed-form in-plane ones against them.
-#include "ample/stiffness/inPlaneEigen.h"
 #include "ample/stiffness/tensorOps.h"
 #include <doctest/doctest.h>
 #include <cmath>

@@ -13,7 +13,6 @@
 //--------------------------------------------------------------------------
 #pragma once
 #include "ample/mpData.h"
-#include "inPlaneEigen.h"
 #include "tensorOps.h"
 #include <Eigen/Eigenvalues>
 
@@ -36,7 +35,7 @@ Matrix4d formULstiff2D(const Matrix3d& F, const Matrix6d& D, const Vector6d& sig
 Matrix4d formULstiff2D(const Matrix3d& F, const Matrix6d& D, const Vector6d& sig,
                        const Matrix3d& BeT, const Matrix4d& L);  // L = dLogdB2D(BeT) given
 Matrix4d dLogdB2D(const Matrix3d& b);      // in-plane block of dLogdB (b block diagonal)
-Matrix4d dLogdB2D(const InPlaneEigen& b);  // the same from b's decomposition (inPlaneEigen.h)
+Matrix4d dLogdB2D(const InPlaneEigen& b);  // the same from b's decomposition (tensorOps.h)
 Matrix4d elasticBlock2D(const Matrix6d& D);  // in-plane block of D as a pair tensor
 
 }  // namespace ample

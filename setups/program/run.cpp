@@ -110,7 +110,8 @@ struct RunHooks : Hooks {
     if (cpdi) basisLoop = elemMPinfoCPDI;                            // CPDI points (cpdi/), on either mesh
     else if (!an.mesh.regular()) basisLoop = elemMPinfoMesh;         // a general mesh (meshes/)
     if (large && opt.basisLoop) basisLoop = opt.basisLoop;           // each of them, faster
-    pointLoop = large ? opt.pointLoop : pointLoopOf(an.formulation);  // UL: detMPs (PC, SS: formulations/)
+    if (large) pointLoop = opt.pointLoop;                             // the fast loop, every formulation
+    else if (an.formulation != Formulation::UL) pointLoop = detMPsForm;  // PC, SS (formulations/)
     x.Kff.choice = an.solver;                                        // SparseLU, or LDLT if symmetric
     chosen = large || an.solver != LinearSolver::LU;
   }
