@@ -6,8 +6,8 @@
 # ample, as tools/debug.sh does), runs SETUP under gdb in batch mode, stops
 # where tools/debug.sh stops by default (the line after
 # `MaterialPoint& mp = mpData[p];` in ample/detMPs.cpp: the first point of the
-# first Newton-Raphson pass), or at --from WHERE (gdb's `break WHERE`: detMPs,
-# the function's entry), then repeats `step` until the frame is in FUNC, or at
+# first Newton-Raphson pass), or at --from WHERE (gdb's `break WHERE`:
+# ample::detMPs, the function's entry), then repeats `step` until the frame is in FUNC, or at
 # FILE:LINE (--to detMPs.cpp:51: e.g. the point's assembly),
 # at most 5000 steps (tools/gdb/count_steps.py, command count-steps), and
 # prints each stop as gdb shows it to whoever steps by hand, then the number
@@ -22,7 +22,7 @@
 # Usage:   tools/count_steps.sh SETUP [name=value ...] --to FUNC|FILE:LINE [--from WHERE]
 #                                 [--limit N] [--no-build]
 #   e.g.   tools/count_steps.sh compaction --to Hooke3d
-#          tools/count_steps.sh collapse a=1 --to VMconst --from detMPs
+#          tools/count_steps.sh collapse a=1 --to VMconst --from ample::detMPs
 # The run writes to build/debug/output/SETUP (no VTK, --quiet).
 #--------------------------------------------------------------------------
 set -euo pipefail
