@@ -85,4 +85,23 @@ TEST_SUITE("tensorOps") {
     CHECK((inPlaneExp(inPlaneLog(A)) - A).norm() <= 1e-13 * A.norm());
     CHECK((inPlaneLog(A) - symLog(A)).norm() <= 1e-14 * A.norm());
   }
+
+  TEST_CASE("inPlaneEigen: an eigenvalue 1e-20 of the other keeps its digits / its log is finite, as symLog's") {
+    // b = [1.3 c; c t] with c = 1e-9 t: lam_min = t - c^2 / (1.3 - t) + ... = t (1 - 1e-18 t / 1.3),
+    // t to 1e-15 relative; ln(lam_min) to 1e-15 absolute. The closed form alone gave 1.000000005e-8
+    // for t = 1e-8, 1.1e-16 for 1e-16 and 0 for 1e-20.
+    for (double t : {1e-3, 1e-8, 1e-12, 1e-16, 1e-20, 1e-200}) {
+      CAPTURE(t);
+      Matrix3d b = Matrix3d::Identity();
+      b.topLeftCorner<2, 2>() << 1.3, 1e-9 * t, 1e-9 * t, t;
+      const InPlaneEigen e = inPlaneEigen(b);
+      CHECK(std::abs(e.lam(0) - t) <= 1e-15 * t);
+      CHECK(std::abs(e.lam(1) - 1.3) <= 1e-15 * 1.3);
+      const Matrix3d lnb = inPlaneLog(e);
+      CHECK(std::abs(lnb(1, 1) - std::log(t)) <= 1e-15 * std::abs(std::log(t)));
+      CHECK(std::abs(lnb(0, 0) - std::log(1.3)) <= 1e-15);
+      b.topLeftCorner<2, 2>() << t, 1e-9 * t, 1e-9 * t, 1.3;     // the small one first
+      CHECK(std::abs(inPlaneEigen(b).lam(0) - t) <= 1e-15 * t);
+    }
+  }
 }

@@ -57,7 +57,15 @@ bool inPlane(const Matrix3d& A) { return A(0, 2) == 0.0 && A(1, 2) == 0.0 && A(2
 InPlaneEigen inPlaneEigen(const Matrix3d& A) {
   Eigen::SelfAdjointEigenSolver<Eigen::Matrix2d> es;
   es.computeDirect(A.topLeftCorner<2, 2>());
-  return {es.eigenvalues(), es.eigenvectors(), A(2, 2)};
+  Eigen::Vector2d lam = es.eigenvalues();
+  // The closed form finds the root of smaller size as a difference of two of the larger's size,
+  // and keeps none of its digits once it is 1e-16 of the other (a column compressed to 1e-8 of
+  // its height: 0 or negative, its log not finite, where symLog's iterations keep it). The
+  // product of the roots, det A, keeps them: the smaller is det A over the larger.
+  const int big = std::abs(lam(1)) >= std::abs(lam(0)) ? 1 : 0;
+  if (std::abs(lam(1 - big)) < 1e-3 * std::abs(lam(big)))
+    lam(1 - big) = (A(0, 0) * A(1, 1) - A(0, 1) * A(1, 0)) / lam(big);
+  return {lam, es.eigenvectors(), A(2, 2)};
 }
 
 Matrix3d inPlaneLog(const InPlaneEigen& e) {

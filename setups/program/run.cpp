@@ -101,7 +101,7 @@ struct RunHooks : Hooks {
   bool cpdi = false;                             // CPDI points: their domain update
 
   RunHooks(Analysis& a, RunLog& l, const RunOptions& o, RunState& s) : an(a), log(l), T(l.t), opt(o), x(s) {
-#ifdef NDEBUG
+#ifndef AMPLE_CORE_LOOPS
     const bool large = an.mpData.size() >= size_t(fastFrom());     // chosen once, for the run
 #else
     const bool large = false;      // a Debug build, to step through: the core's loops at every size
