@@ -24,7 +24,6 @@
   var checkedArgs = null, previewTimer = null, lastPreview = "";
   window.ampleRuns = [];
   window.pageReady = false;
-  var opened = performance.now();
 
   function $(id) { return document.getElementById(id); }
 
@@ -162,7 +161,7 @@
         }
         if (!window.pageReady) {
           window.pageReady = true;
-          window.firstPictureSeconds = (performance.now() - opened) / 1000;
+          window.firstPictureSeconds = performance.now() / 1000;       // since the page was asked for
         }
       });
     }, window.pageReady ? 150 : 0);

@@ -49,7 +49,7 @@ var Viewer = (function () {
   var GREY = "rgb(170,170,170)";
 
   var el = {}, run = null, current = 0, follow = true, timer = null, view = null, drawnCount = [];
-  var pending = false;
+  var pending = false, drawMs = 0;
 
   function $(id) { return document.getElementById(id); }
 
@@ -163,16 +163,31 @@ var Viewer = (function () {
     ctx.stroke();
   }
 
-  // the points of frame f coloured by field name over [lo, hi]; how many it drew
+  // the points of frame f coloured by field name over [lo, hi]; how many it drew. The points are
+  // sorted by colour (a counting sort into 256 colours and grey) and each colour filled as one path
   function drawPoints(ctx, f, name, lo, hi) {
-    var v = fieldValues(f, name), c = f.cols, drawn = 0, k = 255 / (hi - lo);
-    for (var p = 0; p < f.n; ++p) {
-      var x = c.x[p], y = c.y[p];
-      if (!isFinite(x) || !isFinite(y)) continue;
-      var h = half(c, p), w = Math.max(1, 2 * h[0] * view.s), hh = Math.max(1, 2 * h[1] * view.s);
-      ctx.fillStyle = isFinite(v[p]) ? LUT[Math.max(0, Math.min(255, Math.round((v[p] - lo) * k)))] : GREY;
-      ctx.fillRect(view.ox + view.s * x - 0.5 * w, view.oy - view.s * y - 0.5 * hh, w, hh);
-      ++drawn;
+    var v = fieldValues(f, name), c = f.cols, k = 255 / (hi - lo), n = f.n, drawn = 0;
+    var colourOf = new Uint16Array(n), count = new Int32Array(258), order = new Int32Array(n), p;
+    for (p = 0; p < n; ++p) {
+      colourOf[p] = isFinite(v[p]) ? Math.max(0, Math.min(255, Math.round((v[p] - lo) * k))) : 256;
+      ++count[colourOf[p] + 1];
+    }
+    for (var i = 1; i < 258; ++i) count[i] += count[i - 1];     // count[i]: where colour i starts
+    for (p = 0; p < n; ++p) order[count[colourOf[p]]++] = p;
+    for (var at = 0, col = 0; col <= 256; ++col) {
+      var end = count[col];
+      if (end === at) continue;
+      ctx.fillStyle = col < 256 ? LUT[col] : GREY;
+      ctx.beginPath();
+      for (; at < end; ++at) {
+        p = order[at];
+        var x = c.x[p], y = c.y[p];
+        if (!isFinite(x) || !isFinite(y)) continue;
+        var h = half(c, p), w = Math.max(1, 2 * h[0] * view.s), hh = Math.max(1, 2 * h[1] * view.s);
+        ctx.rect(view.ox + view.s * x - 0.5 * w, view.oy - view.s * y - 0.5 * hh, w, hh);
+        ++drawn;
+      }
+      ctx.fill();
     }
     return drawn;
   }
@@ -307,7 +322,8 @@ var Viewer = (function () {
   function report() {
     var r = el.canvas.getBoundingClientRect(), b = view && view.box ? view.box : null;
     var st = {frames: run ? run.frames.length : 0, drawn: drawnCount, shown: current,
-              lstp: run && run.frames.length ? run.frames[current].lstp : null, errors: window.pageErrors};
+              lstp: run && run.frames.length ? run.frames[current].lstp : null, errors: window.pageErrors,
+              drawMs: drawMs};
     if (b && view)
       st.plot = {left: Math.floor(r.left + view.ox + view.s * b.x0), right: Math.ceil(r.left + view.ox + view.s * b.x1),
                  top: Math.floor(r.top + view.oy - view.s * b.y1), bottom: Math.ceil(r.top + view.oy - view.s * b.y0)};
@@ -319,9 +335,10 @@ var Viewer = (function () {
     if (!run || !run.frames.length) return;
     current = Math.max(0, Math.min(run.frames.length - 1, i));
     follow = current === run.frames.length - 1;
-    var f = run.frames[current];
+    var f = run.frames[current], t0 = performance.now();
     drawnCount[current] = drawFrame(current);
     drawResiduals();
+    drawMs = performance.now() - t0;
     el.slider.max = String(run.frames.length - 1);
     el.slider.value = String(current);
     el.frameNo.textContent = "frame " + (current + 1) + " of " + run.frames.length;
