@@ -220,7 +220,8 @@
       if (m.type === "frame") progress(run, m.lstp, "load step " + m.lstp + " of " + run.lstps + " converged");
       if (m.type === "err") el.message.textContent += (el.message.textContent ? "\n" : "") + m.line;
       if (m.type === "frame" && !shown) { shown = true; Viewer.show(run); }
-      else if (m.type === "frame" || m.type === "pass" || m.type === "grid") Viewer.update();
+      else if (m.type === "frame" || m.type === "grid") Viewer.update();
+      else if (m.type === "pass") Viewer.update(true);
       if (m.type === "done") finish(run, worker, m);
     };
     worker.onerror = function (e) {

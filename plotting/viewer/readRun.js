@@ -177,8 +177,9 @@ var ReadRun = (function () {
                        grid: g >= 0 ? g : gridIndex("mesh.vtk")});
     }
     names.forEach(function (name) { addFrame(lstpOf(name), colsOfVtk(vtk(files[name]))); });
-    if (!names.length && files["mp_final.csv"])
-      addFrame(summary.last_converged_step, colsOfFinal(csv(text(files["mp_final.csv"]))));
+    var final = files["mp_final.csv"] ? csv(text(files["mp_final.csv"])) : null;
+    if (final) run.v0 = final.cols.V0;                   // the volume ratio J = V / V0
+    if (!names.length && final) addFrame(summary.last_converged_step, colsOfFinal(final));
     if (!run.frames.length) throw new Error("no mpData_<lstp>.vtk and no mp_final.csv: nothing to draw");
     return run;
   }

@@ -305,7 +305,8 @@ var Viewer = (function () {
       if (Number(s) !== shown) attempts(bySteps[s]).forEach(function (qs) { line(qs, "rgba(59,82,139,0.25)", 1); });
     });
     var last = run.passes[run.passes.length - 1].lstp;
-    var red = follow ? last : shown;                     // following a run: the step going on
+    var live = run.source === "page" && run.status === undefined;
+    var red = live && follow ? last : shown;             // following a run: the step going on
     if (bySteps[red]) attempts(bySteps[red]).forEach(function (qs) { line(qs, "#c0392b", 2); });
     ctx.fillStyle = "#222"; ctx.textAlign = "left"; ctx.textBaseline = "top";
     if (bySteps[red]) ctx.fillText("load step " + red, x1 + 6, y1);
@@ -346,14 +347,19 @@ var Viewer = (function () {
     report();
   }
 
-  // frames, grids or passes were added (the run goes on): the newest frame if it was followed
-  function update() {
+  // frames, grids or passes were added (the run goes on): the newest frame if it was followed, at
+  // most once a display frame; passes alone redraw the residual plot only (the main thread stays
+  // free: the run's worker and the page share the machine's cores)
+  var pendingFrame = false;
+  function update(passesOnly) {
+    pendingFrame = pendingFrame || !passesOnly;
     if (pending) return;
     pending = true;
     requestAnimationFrame(function () {
       pending = false;
       if (!run) return;
-      if (!run.frames.length) { drawResiduals(); return; }
+      if (!run.frames.length || !pendingFrame) { drawResiduals(); return; }
+      pendingFrame = false;
       showFrame(follow ? run.frames.length - 1 : current);
     });
   }
