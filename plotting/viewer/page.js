@@ -185,7 +185,9 @@
       run.passes.push({lstp: m.lstp, NRit: m.NRit, fErr: m.fErr});
     } else if (m.type === "frame") {
       var cols = {};
-      table.columns.forEach(function (c, k) { cols[c] = m.data.subarray(k * m.n, (k + 1) * m.n); });
+      table.columns.forEach(function (c, k) {             // single precision: drawn, not computed
+        cols[c] = Float32Array.from(m.data.subarray(k * m.n, (k + 1) * m.n));
+      });
       run.frames.push({lstp: m.lstp, lf: m.lf, NRit: m.NRit, fErr: m.fErr, n: m.n, cols: cols,
                        grid: run.grids.length - 1});
       if (m.lstp === 1) run.firstStep = performance.now();
