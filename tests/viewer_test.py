@@ -205,10 +205,10 @@ def check_runs(b, opt, problems, shots):
         b.eval("T.form(%s, {}, {})" % json.dumps(setup))
         b.eval("document.getElementById('field').value = %s; true" % json.dumps(field))
         n = b.eval("T.run()")
-        if setup != "compaction":                      # a picture during the run: a third of the steps
+        if setup != "compaction":                      # a picture during the run: at 3/4 of the steps
             lstps = json.load(open(os.path.join(out, "summary.json")))["lstps"]
             b.wait("ampleRuns.length > %d && (ampleRuns[%d].frames.length > %d || ampleRuns[%d].status !== undefined)"
-                   % (n, n, lstps // 3, n), 120)
+                   % (n, n, 3 * lstps // 4, n), 120)
             shots.append(b.screenshot(os.path.join(opt.work, setup + "_running.png")))
         b.wait("ampleRuns.length > %d && ampleRuns[%d].status !== undefined" % (n, n), 180)
         s = b.eval("T.summary(%d)" % n)
@@ -350,7 +350,7 @@ def main():
         b.wait("window.pageReady", 30)
         first = b.eval("window.firstPictureSeconds")
         drawn = b.eval("Viewer.state().drawn")
-        shots.append(b.screenshot(os.path.join(opt.work, "opened.png")))
+        b.screenshot(os.path.join(opt.work, "opened.png"))
         print("first picture (collapse as set up, %s points) %.2f s after opening" % (drawn, first))
         if not first or first > 2 or not drawn or not drawn[0]:
             problems.append("first picture: %s s, points drawn %s" % (first, drawn))
@@ -371,7 +371,8 @@ def main():
     if opt.shots:
         os.makedirs(opt.shots, exist_ok=True)
         for s in shots:
-            shutil.copy(s, os.path.join(opt.shots, "viewer_" + os.path.basename(s)))
+            shutil.copy(s, os.path.join(opt.shots, "viewer_%s_%s.png" % (os.path.basename(s)[:-4],
+                                                                        time.strftime("%Y-%m-%d"))))
     for p in problems:
         print("FAIL " + p)
     print("wasm.page: %s" % ("all checks passed" if not problems else "%d problems" % len(problems)))

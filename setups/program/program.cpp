@@ -1,7 +1,8 @@
 //--------------------------------------------------------------------------
 // program — what `ample ARGS` does: read the command line, answer or run
 //--------------------------------------------------------------------------
-// See program.h for inputs and outputs.
+// See program.h for inputs and outputs; main() (main.cpp) and the browser
+// tab's ampleRun (wasm/ampleWasm.cpp) call it.
 //--------------------------------------------------------------------------
 #include "program.h"
 #include "ample/errors.h"
