@@ -21,6 +21,7 @@
   "use strict";
   var el = {}, table = null, checker = null, compiled = null, pending = {}, nextId = 1;
   var running = null;                         // {worker, run} of the run going on
+  var kept = null;                            // the worker of the last run ended, kept for its files
   var checkedArgs = null, previewTimer = null, lastPreview = "";
   window.ampleRuns = [];
   window.pageReady = false;
@@ -206,6 +207,7 @@
     if (running) return;
     Viewer.stop();
     clearTimeout(previewTimer);
+    if (kept) kept.terminate();                 // the last run's files go with its worker
     var run = newRun(args, "run"), worker = new Worker("worker.js");
     window.ampleRuns.push(run);
     running = {worker: worker, run: run};
@@ -253,7 +255,7 @@
       });
     };
     worker.onmessage = function (e) { if (e.data.type === "file") files[e.data.id](e.data.bytes); };
-    run.worker = worker;
+    kept = worker;
     if (m.texts["summary.json"]) {
       run.summary = JSON.parse(m.texts["summary.json"]);
       resultsTable(run.summary);
