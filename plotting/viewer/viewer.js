@@ -82,12 +82,13 @@ var Viewer = (function () {
     return {ctx: ctx, w: w, h: h};
   }
 
-  // half sizes of point p's drawn domain
+  // half sizes of point p's drawn domain, into h (no allocation per point)
+  var h = [0, 0];
   function half(c, p) {
     var lx = c.lpx[p], ly = c.lpy[p];
-    if (lx > 0 && ly > 0) return [lx, ly];
-    var l = 0.5 * Math.sqrt(Math.max(c.V[p], 0));
-    return [l, l];
+    if (lx > 0 && ly > 0) { h[0] = lx; h[1] = ly; return h; }
+    h[0] = h[1] = 0.5 * Math.sqrt(Math.max(c.V[p], 0));
+    return h;
   }
 
   // the bounds of everything the run has drawn so far
@@ -102,10 +103,10 @@ var Viewer = (function () {
       if (!f.box) {
         var fb = {x0: Infinity, x1: -Infinity, y0: Infinity, y1: -Infinity};
         for (var p = 0; p < f.n; ++p) {
-          var h = half(f.cols, p), x = f.cols.x[p], y = f.cols.y[p];
+          var hp = half(f.cols, p), x = f.cols.x[p], y = f.cols.y[p];
           if (!isFinite(x) || !isFinite(y)) continue;
-          fb.x0 = Math.min(fb.x0, x - h[0]); fb.x1 = Math.max(fb.x1, x + h[0]);
-          fb.y0 = Math.min(fb.y0, y - h[1]); fb.y1 = Math.max(fb.y1, y + h[1]);
+          fb.x0 = Math.min(fb.x0, x - hp[0]); fb.x1 = Math.max(fb.x1, x + hp[0]);
+          fb.y0 = Math.min(fb.y0, y - hp[1]); fb.y1 = Math.max(fb.y1, y + hp[1]);
         }
         f.box = fb;
       }
@@ -183,7 +184,7 @@ var Viewer = (function () {
         p = order[at];
         var x = c.x[p], y = c.y[p];
         if (!isFinite(x) || !isFinite(y)) continue;
-        var h = half(c, p), w = Math.max(1, 2 * h[0] * view.s), hh = Math.max(1, 2 * h[1] * view.s);
+        var hp = half(c, p), w = Math.max(1, 2 * hp[0] * view.s), hh = Math.max(1, 2 * hp[1] * view.s);
         ctx.rect(view.ox + view.s * x - 0.5 * w, view.oy - view.s * y - 0.5 * hh, w, hh);
         ++drawn;
       }
