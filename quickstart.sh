@@ -8,6 +8,9 @@
 # `cmake --workflow --preset quick` (README, "Test").
 # ./quickstart.sh --fast [args]: also MUMPS and a fast serial BLAS (libmumps-seq-dev,
 # libopenblas0-serial), built with the preset "fast" (build/fast/ample, solver=MUMPS).
+# ./quickstart.sh --wasm: the program for a browser tab instead (emscripten; the preset "wasm",
+# about 2 min: build/wasm/viewer, the page with ample_wasm.js and .wasm), and the line that
+# serves it (docs/browser.md).
 set -euo pipefail
 cd "$(dirname "$0")"
 pkgs="cmake g++ libeigen3-dev doctest-dev python3-matplotlib"
@@ -16,11 +19,21 @@ if [ "${1:-}" = "--fast" ]; then
   shift
   pkgs="$pkgs libmumps-seq-dev libopenblas0-serial"
   preset=fast
+elif [ "${1:-}" = "--wasm" ]; then
+  pkgs="cmake libeigen3-dev emscripten"
+  preset=wasm
 fi
 if ! dpkg -s $pkgs >/dev/null 2>&1; then
   sudo=""; [ "$(id -u)" -ne 0 ] && sudo="sudo"
   echo "quickstart: installing $pkgs"
   $sudo apt-get update && $sudo env DEBIAN_FRONTEND=noninteractive apt-get install -y $pkgs
+fi
+if [ $preset = wasm ]; then
+  echo "quickstart: building build/wasm/viewer (emscripten, -j2)"
+  cmake --workflow --preset wasm
+  echo "quickstart: built; serve the page and open http://127.0.0.1:8000/ :"
+  echo "  python3 -m http.server -d build/wasm/viewer -b 127.0.0.1 8000"
+  exit 0
 fi
 echo "quickstart: configuring build/$preset (Release)"
 cmake --preset $preset > /dev/null

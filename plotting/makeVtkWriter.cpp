@@ -7,9 +7,21 @@
 #include "ample/errors.h"
 #include <charconv>
 #include <cstdint>
+#include <cstdio>
 #include <cstring>
 
 namespace ample {
+
+// x as printf "%.15g" writes it, into buf (32 bytes); the end of the text. std::to_chars where
+// the C++ library has it for doubles (__cpp_lib_to_chars: GCC's), else snprintf itself
+// (emscripten's libc++ 13, the browser build: the same text, only slower)
+static char* real15(char* buf, double x) {
+#if defined(__cpp_lib_to_chars)
+  return std::to_chars(buf, buf + 32, x, std::chars_format::general, 15).ptr;
+#else
+  return buf + std::snprintf(buf, 32, "%.15g", x);
+#endif
+}
 
 VtkWriter::VtkWriter(VtkFormat format, const std::string& title, const std::string& dataset,
                      const std::string& path, size_t chunkBytes)
@@ -62,7 +74,7 @@ void VtkWriter::separator(size_t k, int perLine) { out_ += (k + 1) % size_t(perL
 
 std::string vtkReal(double x) {
   char buf[32];                                          // "-1.23456789012345e-308" fits
-  return std::string(buf, std::to_chars(buf, buf + sizeof buf, x, std::chars_format::general, 15).ptr);
+  return std::string(buf, real15(buf, x));
 }
 
 void VtkWriter::reals(const std::vector<double>& v, int perLine) {
@@ -74,7 +86,7 @@ void VtkWriter::reals(const std::vector<double>& v, int perLine) {
       std::memcpy(&bits, &f, 4);
       bigEndian32(bits);
     } else {
-      out_.append(buf, std::to_chars(buf, buf + sizeof buf, v[k], std::chars_format::general, 15).ptr);
+      out_.append(buf, real15(buf, v[k]));
       separator(k, perLine);
     }
     flushIfFull();

@@ -5,7 +5,8 @@
 // four header lines (the version line, a title, ASCII or BINARY, the DATASET
 // line), then sections, each a keyword line in ASCII followed by its numbers.
 //   ASCII:  reals as decimal text with 15 significant digits (type "double";
-//           std::to_chars, general format: the same text as printf "%.15g"),
+//           std::to_chars, general format: the same text as printf "%.15g";
+//           printf itself where the C++ library lacks to_chars for doubles),
 //           ints as decimal text, perLine numbers to a line.
 //   BINARY: the numbers as raw big-endian 4-byte values, reals as IEEE-754
 //           single precision (type "float"), ints as 32-bit two's complement,

@@ -30,8 +30,9 @@ usage: plot_run.py OUTDIR [--field NAME] [--original] [--deformed-grid] [--out P
                   the steps there are
   --window        only the points in [X0, X1] x [Y0, Y1] (m), e.g. the mechanism under a footing
   --animate       instead of the PNG, one self-contained HTML page of every load step written
-                  (mpData_<lstp>.vtk), with a slider and play/pause (animate_run.py, default
-                  OUTDIR/run.html; needs no matplotlib)
+                  (mpData_<lstp>.vtk): the viewer of the browser tab (plotting/viewer/) with the
+                  run's files inside it, a slider, play/pause, zoom and pan (animate_run.py,
+                  default OUTDIR/run.html; needs no matplotlib)
 e.g.   build/release/ample collapse --out output/collapse && plotting/plot_run.py output/collapse
 Tests: tests/plot_run_test.sh (CTest plot.run)
 """

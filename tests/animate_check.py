@@ -230,7 +230,7 @@ def main():
                 text = f.read()
             broken = os.path.join(opt.work, name + "_broken.html")
             with open(broken, "w", encoding="utf-8") as f:
-                f.write(text.replace("show(fromHash());", "show(fromHash()); noSuchFunction();"))
+                f.write(text.replace("</body>", "<script>noSuchFunction();</script>\n</body>"))
             blog = os.path.join(opt.work, name + "_broken_console.log")
             bad, _ = check_dom(dump_dom(opt, "file://" + os.path.abspath(broken), blog), blog, vtks, "broken")
             print("control: a page with a script error: %s" % ("; ".join(bad) or "NOT CAUGHT"))

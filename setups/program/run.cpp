@@ -18,7 +18,7 @@
 //   detMPs       detMPsFast for large runs (opt.pointLoop), or detMPsFbar (locking=Fbar;
 //                ample/locking/), timed
 //   passTerms    the ghost penalty's and the boundaries' Kt, fint and reactions
-//   afterPass    progress, residuals.csv; a NaN or Inf stops the step
+//   afterPass    progress, residuals.csv, opt.stream.pass; a NaN or Inf stops the step
 //   checkConverged  why a step failed (round-off floor, still falling:
 //                roundOffFloor.h), --accept-floor; an inverted point stops it
 //   updateDomain the other domain updates (domains/updateDomain.h): CPDI points,
@@ -156,6 +156,7 @@ struct RunHooks : Hooks {
   }
   void afterPass(const Analysis& a, const Increment& inc, int NRit, double fErr) const override {
     x.NRit = NRit, x.fErr = fErr;
+    if (opt.stream.pass) opt.stream.pass(inc.lstp, NRit, fErr);
     recordPass(log, a.mpData, inc.lstp, NRit, fErr, opt.quiet);     // throws on NaN
     x.NRit = NRit + 1;
   }
@@ -192,6 +193,7 @@ struct RunHooks : Hooks {
     log.steps.back().seconds = log.stepClock.lap();
     log.lastConverged = inc.lstp;
     appendStepFiles(opt.outDir, a, log);                             // the step's rows, flushed (ample())
+    if (opt.stream.step) opt.stream.step(a, log, inc.lstp);
     if (inc.lstp == opt.lastStep) throw LastStepDone();
   }
 };
@@ -217,6 +219,7 @@ int ample(const Setup& setup, const Params& P, const RunOptions& opt) {
   };
   RunState x;
   const RunHooks hooks(an, log, opt, x);                             // the extensions it asks for
+  if (opt.stream.start) opt.stream.start(an);
   try {
     solve(an, hooks);                                                // the loops (ample.cpp)
   } catch (const LastStepDone&) {                                    // the tests' opt.lastStep

@@ -6,7 +6,7 @@
 // writeOutput.h), also when a load step fails. solveRun is solve() with those
 // hooks, in memory: the tests call it.
 // Inputs:  setup (from the table) · P (its parameters) · opt (output folder,
-//          VTK interval and format, quiet, the fast loops) | an · log
+//          VTK interval and format, quiet, the fast loops, the stream) | an · log
 // Outputs: files in opt.outDir · return value: 0 converged, 1 a load step did
 //          not converge or the run could not go on (message on stderr) |
 //          an (mesh, mpData, frct) · log; solveRun throws RunError
@@ -20,9 +20,19 @@
 #include "plotting/makeVtkWriter.h"
 #include "runLog.h"
 #include "setups/setups.h"
+#include <functional>
 #include <string>
 
 namespace ample {
+
+// what a run hands on as it goes, besides its files: the page's stream (setups/program/wasm/,
+// plotting/viewer/) reads the state in memory; empty (the program's default): nothing is called
+struct RunStream {
+  std::function<void(const Analysis&)> start;                     // the set-up state, before step 1
+  std::function<void(int lstp, int NRit, double fErr)> pass;      // after each Newton-Raphson pass
+  std::function<void(const Analysis&, const RunLog&, int lstp)> step;  // after each converged step,
+                                                                  // its files written
+};
 
 struct RunOptions {
   std::string outDir;      // output folder
@@ -40,6 +50,7 @@ struct RunOptions {
   // for UL; ample/formulations/)
   BasisLoop basisLoop = elemMPinfoFast;
   PointLoop pointLoop = detMPsFast;
+  RunStream stream{};      // the state handed on as the run goes (none by default)
 };
 
 int ample(const Setup& setup, const Params& P, const RunOptions& opt);
