@@ -7,8 +7,7 @@
 #include "addPoint.h"
 #include "ample/stiffness/formPCstiff.h"
 #include "ample/stiffness/formULstiff.h"
-#include "constitutive/Hooke3d.h"
-#include "constitutive/VMconst.h"
+#include "ample/pointModel.h"
 
 namespace ample {
 
@@ -29,9 +28,6 @@ Matrix3d plusGradDu(Matrix3d start, const Eigen::VectorXd& uvw, const MaterialPo
   return start;
 }
 
-ConstOut constitutive(const Vector6d& epsEtr, const MaterialPoint& mp) {  // cmType 1 or 2
-  return (mp.cmType == CmType::Elastic) ? Hooke3d(epsEtr, mp.mCst) : VMconst(epsEtr, mp.mCst);
-}
 
 //--------------------------------------------------------------------------
 // finiteStrainPoint — UL ([AMPLE] eqs 5-18) or PC ([Lagrangian] eqs 18-23)
@@ -48,7 +44,7 @@ PointTerms finiteStrainPoint(const Matrix3d& dF, const Matrix3d& bEn, Formulatio
   const InPlaneEigen eig = inPlaneEigen(BeT);                   // once for eq 10 and eq A.2
   const Vector6d epsEtr = tensorToStrain(0.5 * inPlaneLog(eig));    // eq 10
 
-  const ConstOut cm = constitutive(epsEtr, mp);                 // eqs 5, 11
+  const ConstOut cm = pointModel(epsEtr, mp);                 // eqs 5, 11
   mp.epsE = cm.epsE;
   mp.sig = cm.Ksig / mp.F.determinant();                        // eq 6
 
@@ -83,7 +79,7 @@ PointTerms finiteStrainPoint(const Matrix3d& dF, const Matrix3d& bEn, Formulatio
 PointTerms smallStrainPoint(const Matrix3d& H, MaterialPoint& mp) {  // H = grad du
   const Vector6d epsTr = mp.epsEn + tensorToStrain(0.5 * (H + H.transpose()));  // eqs 2, 10
 
-  const ConstOut cm = constitutive(epsTr, mp);                  // eq 3
+  const ConstOut cm = pointModel(epsTr, mp);                  // eq 3
   mp.F = Matrix3d::Identity();
   mp.epsE = cm.epsE;
   mp.sig = cm.Ksig;                                             // Cauchy stress

@@ -9,8 +9,7 @@
 #include "ample/stiffness/formPCstiff.h"
 #include "ample/stiffness/formULstiff.h"
 #include "ample/stiffness/tensorOps.h"
-#include "constitutive/Hooke3d.h"
-#include "constitutive/VMconst.h"
+#include "ample/pointModel.h"
 
 namespace ample {
 
@@ -26,16 +25,13 @@ struct StartTerms {            // a point's terms of eqs 14 and 16 on the step's
   double V;                    // the volume
 };
 
-ConstOut constitutive(const Vector6d& epsEtr, const MaterialPoint& mp) {  // cmType 1 or 2
-  return mp.cmType == CmType::Elastic ? Hooke3d(epsEtr, mp.mCst) : VMconst(epsEtr, mp.mCst);
-}
 
 // PC ([Lagrangian] eqs 18-23): the state of [AMPLE] eqs 5-11, then P~ and its tangent
 StartTerms previouslyConverged(const Matrix3d& dF, MaterialPoint& mp) {
   mp.F = dF * mp.Fn;                                                                     // eq 7
   const Matrix3d bEn = symExp(2.0 * strainToTensor(mp.epsEn));                          // eq 9
   const Matrix3d bEtr = dF * bEn * dF.transpose();                                      // eq 8
-  const ConstOut cm = constitutive(tensorToStrain(0.5 * symLog(bEtr)), mp);            // eqs 10, 5, 11
+  const ConstOut cm = pointModel(tensorToStrain(0.5 * symLog(bEtr)), mp);            // eqs 10, 5, 11
   mp.epsE = cm.epsE;
   mp.sig = cm.Ksig / mp.F.determinant();                                                 // eq 6
   const double Jn = mp.Fn.determinant();
@@ -49,7 +45,7 @@ StartTerms previouslyConverged(const Matrix3d& dF, MaterialPoint& mp) {
 StartTerms smallStrain(const Eigen::Matrix2d& H, MaterialPoint& mp) {
   Matrix3d e = Matrix3d::Zero();
   e.topLeftCorner<2, 2>() = 0.5 * (H + H.transpose());                                  // sym(grad du)
-  const ConstOut cm = constitutive(mp.epsEn + tensorToStrain(e), mp);                   // eqs 2, 3
+  const ConstOut cm = pointModel(mp.epsEn + tensorToStrain(e), mp);                   // eqs 2, 3
   mp.F = Matrix3d::Identity();
   mp.epsE = cm.epsE;
   mp.sig = cm.Ksig;                                                                      // Cauchy stress

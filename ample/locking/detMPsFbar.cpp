@@ -9,8 +9,7 @@
 #include "ample/meshes/cellSearch.h"
 #include "ample/stiffness/formULstiff.h"
 #include "ample/stiffness/tensorOps.h"
-#include "constitutive/Hooke3d.h"
-#include "constitutive/VMconst.h"
+#include "ample/pointModel.h"
 #include <cmath>
 
 namespace ample {
@@ -23,7 +22,7 @@ using Eigen::Vector4d;
 using BMatrix = Eigen::Matrix<double, 4, nD * MAXN>;  // B(2k+l, 2b+k) = dS_b/dx_l: grad du = B u_p
 using PointVector = Eigen::Matrix<double, Eigen::Dynamic, 1, 0, nD * MAXN, 1>;  // 2 nn entries, no heap
 
-struct PointTerms {         // one point's share of fint and Kt
+struct FbarTerms {         // one point's share of fint and Kt
   Matrix4d A;               // A - Q (x) I: the tangent of the point's own nodes
   Vector4d Q;               // Q_ij, (i,j) -> 2i+j: the coupling to its cell's volume change
   Vector4d S;               // sigma_ij paired with dS/dx (eq 16)
@@ -39,9 +38,6 @@ struct Patches {
   std::vector<int> nodeStart, nodes;       // cell c's nodes: nodes[nodeStart[c] .. nodeStart[c+1])
 };
 
-ConstOut constitutive(const Vector6d& epsEtr, const MaterialPoint& mp) {  // cmType 1 or 2
-  return (mp.cmType == CmType::Elastic) ? Hooke3d(epsEtr, mp.mCst) : VMconst(epsEtr, mp.mCst);
-}
 
 // grad du = sum_v du_v (x) dS_v/dX~, the in-plane block (eq 17 less I)
 Matrix2d gradDu(const Eigen::VectorXd& uvw, const MaterialPoint& mp) {
@@ -52,9 +48,9 @@ Matrix2d gradDu(const Eigen::VectorXd& uvw, const MaterialPoint& mp) {
 
 // the terms of a point with tangent A, stress sig, gradients dSx, volume Vp;
 // Q = A:I / 2 - halfSig (halfSig: sigma / 2 for F-bar, 0 for B-bar)
-PointTerms terms(const Matrix4d& A, const Matrix2d& halfSig, const Matrix2d& sig,
+FbarTerms terms(const Matrix4d& A, const Matrix2d& halfSig, const Matrix2d& sig,
                  const Eigen::Matrix<double, nD, MAXN>& dSx, double Vp, int nn) {
-  PointTerms t;
+  FbarTerms t;
   for (int ij = 0; ij < 4; ++ij) t.Q(ij) = 0.5 * (A(ij, 0) + A(ij, 3)) - halfSig(ij / 2, ij % 2);
   t.A = A;
   t.A.col(0) -= t.Q;                                            // - Q_ij delta_kl
@@ -69,7 +65,7 @@ PointTerms terms(const Matrix4d& A, const Matrix2d& halfSig, const Matrix2d& sig
 }
 
 // F-bar (UL, PC): dF's in-plane block scaled to the cell's volume change dJbar
-PointTerms fbarPoint(const Matrix2d& dF, double dJbar, MaterialPoint& mp) {
+FbarTerms fbarPoint(const Matrix2d& dF, double dJbar, MaterialPoint& mp) {
   const double dJ = dF.determinant();
   Matrix3d dFbar = Matrix3d::Identity();
   dFbar.topLeftCorner<2, 2>() = std::sqrt(dJbar / dJ) * dF;
@@ -77,7 +73,7 @@ PointTerms fbarPoint(const Matrix2d& dF, double dJbar, MaterialPoint& mp) {
   mp.F = dFbar * mp.Fn;                                         // eq 7
   const Matrix3d BeT = dFbar * bEn * dFbar.transpose();         // eq 8
   const InPlaneEigen eig = inPlaneEigen(BeT);
-  const ConstOut cm = constitutive(tensorToStrain(0.5 * inPlaneLog(eig)), mp);  // eqs 10, 5, 11
+  const ConstOut cm = pointModel(tensorToStrain(0.5 * inPlaneLog(eig)), mp);  // eqs 10, 5, 11
   mp.epsE = cm.epsE;
   mp.sig = cm.Ksig / mp.F.determinant();                        // eq 6
   const Matrix4d A = formULstiff2D(mp.F, cm.D, mp.sig, BeT, dLogdB2D(eig));
@@ -88,10 +84,10 @@ PointTerms fbarPoint(const Matrix2d& dF, double dJbar, MaterialPoint& mp) {
 }
 
 // B-bar (SS): the trace of grad du replaced by the cell's average thetaBar
-PointTerms bbarPoint(const Matrix2d& H, double thetaBar, MaterialPoint& mp) {
+FbarTerms bbarPoint(const Matrix2d& H, double thetaBar, MaterialPoint& mp) {
   Matrix3d e = Matrix3d::Zero();
   e.topLeftCorner<2, 2>() = 0.5 * (H + H.transpose()) + 0.5 * (thetaBar - H.trace()) * Matrix2d::Identity();
-  const ConstOut cm = constitutive(mp.epsEn + tensorToStrain(e), mp);  // [Boundaries] eqs 2-3
+  const ConstOut cm = pointModel(mp.epsEn + tensorToStrain(e), mp);  // [Boundaries] eqs 2-3
   mp.F = Matrix3d::Identity();
   mp.epsE = cm.epsE;
   mp.sig = cm.Ksig;
@@ -170,7 +166,7 @@ void detMPsFbar(const Mesh& mesh, const Eigen::VectorXd& uvw, std::vector<Materi
     for (int q = P.start[c]; q < P.start[c + 1]; ++q) {         // the point loop
       const int p = P.points[q];
       MaterialPoint& mp = mpData[p];
-      const PointTerms t = SS ? bbarPoint(G[p], bar[c] / den[c], mp) : fbarPoint(G[p], bar[c] / den[c], mp);
+      const FbarTerms t = SS ? bbarPoint(G[p], bar[c] / den[c], mp) : fbarPoint(G[p], bar[c] / den[c], mp);
       const int m2 = nD * mp.nn;
       const auto B = t.B.leftCols(m2);
       const PointVector f = t.Vp * B.transpose() * t.S;                                   // eq 16
