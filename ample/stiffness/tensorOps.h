@@ -7,7 +7,8 @@
 // decomposition A = V diag(lam) V', f(A) = V diag(f(lam)) V' ([AMPLE] eqs 9-10);
 // stretchTensor the right stretch U of F = R U ([Lagrangian] eq 34). inPlaneEigen: the same
 // decomposition of a plane-strain tensor in closed form (its in-plane 2x2 block, zz its own
-// eigenvalue), which formULstiff's dLogdB2D and the fast loop's exp/log use.
+// eigenvalue; the smaller eigenvalue as det over the larger, which keeps its digits at any
+// ratio), which formULstiff's dLogdB2D and the fast loop's exp/log use.
 // Inputs/outputs: 6-vectors and 3x3 matrices as named.
 // Tests:   tests/test_tensorOps.cpp
 //--------------------------------------------------------------------------

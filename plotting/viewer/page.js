@@ -52,11 +52,12 @@
     }
     Object.keys(summary.results || {}).forEach(function (k) {
       var v = summary.results[k];
-      row(k, v === null ? "undefined" : Number(v).toPrecision(10));
+      if (v === null) row(k, "undefined");
+      else row(k, Number.isInteger(Number(v)) ? String(v) : Number(v).toPrecision(10));   // a count as such
     });
     row("load steps", summary.last_converged_step + " of " + summary.lstps);
     row("Newton-Raphson passes", summary.total_NR_iterations);
-    row("points", summary.nmp);
+    if (!("points" in (summary.results || {}))) row("points", summary.nmp);   // once
     row("wall time (s)", Number(summary.wall_seconds).toFixed(3));
     el.results.appendChild(t);
   }
