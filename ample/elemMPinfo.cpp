@@ -22,11 +22,16 @@ void pointInfo(const Mesh& mesh, MaterialPoint& mp, size_t p) {
   } catch (const RunError& e) {
     throw atPoint(p, e);
   }
+  pointNodes(mesh, mp);
+  MPMbasis(mesh, mp);
+}
+
+// the nodes of the point's cells (nodesForMP), and its basis arrays cleared for the basis to fill
+void pointNodes(const Mesh& mesh, MaterialPoint& mp) {
   mp.nIN.fill(0);
   mp.nn = nodesForMP(mesh, mp.eIN, mp.ne, mp.nIN.data());
   mp.Svp.fill(0.0);
   mp.dSvp.setZero();
-  MPMbasis(mesh, mp);
 }
 
 // the active cells: those holding points (detFDoFs)

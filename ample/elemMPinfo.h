@@ -23,6 +23,7 @@ void elemMPinfo(Mesh& mesh, std::vector<MaterialPoint>& mpData);
 
 // its parts, which the loops that replace it reuse
 void pointInfo(const Mesh& mesh, MaterialPoint& mp, size_t p);  // point p: eIN, ne, nIN, nn, Svp, dSvp
+void pointNodes(const Mesh& mesh, MaterialPoint& mp);             // nIN, nn from eIN, ne; Svp, dSvp zeroed
 void markActiveCells(Mesh& mesh, const std::vector<MaterialPoint>& mpData);  // eInA
 RunError atPoint(size_t p, const RunError& e);                  // e, its message naming point p
 // a loop that replaces elemMPinfo as a whole (keepCells: the finite element mode's, fem=1)

@@ -103,5 +103,19 @@ TEST_SUITE("tensorOps") {
       b.topLeftCorner<2, 2>() << t, 1e-9 * t, 1e-9 * t, 1.3;     // the small one first
       CHECK(std::abs(inPlaneEigen(b).lam(0) - t) <= 1e-15 * t);
     }
+    // rotated by 0.4 rad: b = Q diag(1, t) Q', whose entries carry round-off of 1e-16 and so
+    // det b that of a few 1e-16; lam_min to 1e-14 and its eigenvector along Q's second column
+    const double a = 0.4;
+    Eigen::Matrix2d Q;
+    Q << std::cos(a), -std::sin(a), std::sin(a), std::cos(a);
+    for (double t : {1e-4, 1e-6, 1e-8}) {
+      CAPTURE(t);
+      Matrix3d b = Matrix3d::Identity();
+      b.topLeftCorner<2, 2>() = Q * Eigen::Vector2d(1.0, t).asDiagonal() * Q.transpose();
+      const InPlaneEigen e = inPlaneEigen(b);
+      CHECK(std::abs(e.lam(0) - t) <= 1e-14);
+      CHECK(std::abs(e.lam(1) - 1.0) <= 1e-14);
+      CHECK(std::abs(std::abs(e.n.col(0).dot(Q.col(1))) - 1.0) <= 1e-14);
+    }
   }
 }

@@ -6,7 +6,6 @@
 #include "elemMPinfoCPDI.h"
 #include "SvpCPDI.h"
 #include "ample/basis/elemForMP.h"
-#include "ample/basis/nodesForMP.h"
 #include "ample/elemMPinfo.h"
 #include "ample/meshes/cellSearch.h"
 #include "ample/meshes/elemMPinfoMesh.h"
@@ -34,10 +33,7 @@ void cpdiPointInfo(const Mesh& mesh, MaterialPoint& mp, size_t p) {
   } catch (const RunError& e) {
     throw atPoint(p, e);
   }
-  mp.nIN.fill(0);
-  mp.nn = nodesForMP(mesh, mp.eIN, mp.ne, mp.nIN.data());
-  mp.Svp.fill(0.0);
-  mp.dSvp.setZero();
+  pointNodes(mesh, mp);
   const Corners x = domainCorners(mp);
   cpdiBasis(mp, x, cornerBasis(mesh, mp, x));
   dropNullNodes(mp);

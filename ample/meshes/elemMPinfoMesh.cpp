@@ -6,7 +6,6 @@
 #include "elemMPinfoMesh.h"
 #include "cellBasis.h"
 #include "cellSearch.h"
-#include "ample/basis/nodesForMP.h"
 #include "ample/elemMPinfo.h"
 #include "ample/errors.h"
 
@@ -26,10 +25,7 @@ void meshPointInfo(const Mesh& mesh, MaterialPoint& mp, size_t p, bool keepCells
   } catch (const RunError& e) {
     throw atPoint(p, e);
   }
-  mp.nIN.fill(0);
-  mp.nn = nodesForMP(mesh, mp.eIN, mp.ne, mp.nIN.data());
-  mp.Svp.fill(0.0);
-  mp.dSvp.setZero();
+  pointNodes(mesh, mp);
   meshMPMbasis(mesh, mp);
   dropNullNodes(mp);
 }
